@@ -1,0 +1,82 @@
+// project.h - projection of an equirectangular radiance image onto L2 SH.
+//
+// Contract. The image is taken for what it is: radiance that is constant over each texel
+// (conventions.h gives each texel's patch of the sphere). The result is the radiance
+// coefficients L_c,i = int L_c(w) Y_i(w) dw in Unity's frame (sh_basis.h), in double.
+//
+// Methods:
+//  - Method::Exact (default): every basis polynomial is integrated over every texel in
+//    closed form, separately in theta and longitude, so the projection of the piecewise-
+//    constant image has no quadrature error at all: a 1x1 image is a uniform environment,
+//    a 2x1 image two exact hemispheres, a bright pole texel exactly its own integral.
+//  - Method::Center: the basis at the texel centre times the texel's exact solid angle,
+//    the rule of most other tools; its error falls as h^2 on smooth input.
+//
+// Numerics. Texel values are summed in double along each row against per-column tables,
+// rows are combined with Neumaier's compensated sum, in fixed tiles of kTileRows rows that
+// are reduced in tile order, so the result is bit-identical for any thread count and any
+// way of splitting the rows into add_rows calls.
+//
+// Memory. EquirectProjector allocates its column tables (4 doubles per column) in begin();
+// nothing else is allocated except worker threads when ProjectOptions::threads != 1.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "shpack/image_view.h"
+#include "shpack/sh_basis.h"
+#include "shpack/status.h"
+
+namespace shpack {
+
+enum class Method : std::uint8_t { Exact, Center };
+enum class NonFinite : std::uint8_t { Error, Zero };  // NaN/Inf texel: fail, or count as 0
+enum class Negative : std::uint8_t { Keep, Clamp };   // negative texel: keep, or count as 0
+
+struct ProjectOptions {
+  Method method = Method::Exact;
+  NonFinite nonfinite = NonFinite::Error;
+  Negative negative = Negative::Keep;
+  unsigned threads = 1;  // worker threads; 0 = std::thread::hardware_concurrency()
+};
+
+// What the projection saw. Counts are of texels (a texel counts once whatever its
+// channels), over the R, G, B channels that are projected.
+struct ProjectStats {
+  std::uint64_t nonfinite_texels = 0;  // at least one NaN or Inf channel
+  std::uint64_t negative_texels = 0;   // at least one finite negative channel
+  std::uint32_t first_nonfinite_x = 0, first_nonfinite_y = 0;  // valid if nonfinite_texels
+  double max_value = 0;                // largest finite channel value (0 if none positive)
+};
+
+inline constexpr std::uint32_t kTileRows = 64;
+
+// Streaming projection: begin() with the full image size, then add_rows() with
+// consecutive bands of rows from the top (any band heights), then finish(). Memory is
+// bounded by the caller's band, so a 16384 x 8192 map can be read scanline by scanline.
+class EquirectProjector {
+ public:
+  EquirectProjector() noexcept;
+  ~EquirectProjector();
+  EquirectProjector(const EquirectProjector&) = delete;
+  EquirectProjector& operator=(const EquirectProjector&) = delete;
+
+  Status begin(std::uint32_t width, std::uint32_t height, const ProjectOptions& options) noexcept;
+  // `rows` holds image rows [first_row, first_row + rows.height); first_row must be the
+  // next row expected. rows.width must equal the image width.
+  Status add_rows(const ImageView& rows, std::uint32_t first_row) noexcept;
+  // Radiance coefficients; valid once every row was added.
+  Status finish(ShL2& radiance, ProjectStats* stats = nullptr) noexcept;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+// One-shot projection of a whole image.
+Status project_equirect(const ImageView& image, const ProjectOptions& options, ShL2& radiance,
+                        ProjectStats* stats = nullptr) noexcept;
+
+}  // namespace shpack
