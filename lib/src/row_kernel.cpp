@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "row_kernel_simd.h"
+
 namespace shpack::detail {
 namespace {
 
@@ -54,24 +56,13 @@ void load_row(const ImageView& row, std::uint32_t y, const ProjectOptions& optio
   }
 }
 
-// Five dot products of one plane with the column tables. Four independent partial sums
-// per quantity (texels i = 0, 1, 2, 3 mod 4) shorten the dependency chain and keep the
-// order fixed, so the result does not depend on the machine.
-ColumnSums plane_sums(const float* v, const ColumnTables& t, std::uint32_t width) noexcept {
-  constexpr int kLanes = 4;
-  double s0[kLanes] = {}, sc[kLanes] = {}, ss[kLanes] = {}, sc2[kLanes] = {}, ss2[kLanes] = {};
-  std::uint32_t i = 0;
-  for (; i + kLanes <= width; i += kLanes) {
-    for (int k = 0; k < kLanes; ++k) {
-      const double x = v[i + k];
-      s0[k] += x;
-      sc[k] += x * t.cos1[i + k];
-      ss[k] += x * t.sin1[i + k];
-      sc2[k] += x * t.cos2[i + k];
-      ss2[k] += x * t.sin2[i + k];
-    }
-  }
-  for (int k = 0; i < width; ++i, ++k) {
+}  // namespace
+
+ColumnSums plane_sums_portable(const float* v, const ColumnTables& t, std::uint32_t width) noexcept {
+  double s0[kSumLanes] = {}, sc[kSumLanes] = {}, ss[kSumLanes] = {}, sc2[kSumLanes] = {},
+         ss2[kSumLanes] = {};
+  for (std::uint32_t i = 0; i < width; ++i) {
+    const std::uint32_t k = i % kSumLanes;
     const double x = v[i];
     s0[k] += x;
     sc[k] += x * t.cos1[i];
@@ -79,11 +70,8 @@ ColumnSums plane_sums(const float* v, const ColumnTables& t, std::uint32_t width
     sc2[k] += x * t.cos2[i];
     ss2[k] += x * t.sin2[i];
   }
-  auto total = [](const double (&a)[kLanes]) { return (a[0] + a[1]) + (a[2] + a[3]); };
-  return {total(s0), total(sc), total(ss), total(sc2), total(ss2)};
+  return {lane_total(s0), lane_total(sc), lane_total(ss), lane_total(sc2), lane_total(ss2)};
 }
-
-}  // namespace
 
 void TexelCounts::merge_after(const TexelCounts& later) noexcept {
   if (nonfinite == 0 && later.nonfinite != 0) {
@@ -98,12 +86,19 @@ void TexelCounts::merge_after(const TexelCounts& later) noexcept {
 void row_column_sums(const ImageView& row, std::uint32_t y, const ProjectOptions& options,
                      const ColumnTables& columns, std::span<float> scratch,
                      TexelCounts& counts, ColumnSums (&sums)[3]) noexcept {
-  if (row.type == PixelType::F32) {
-    load_row<PixelType::F32>(row, y, options, scratch, counts);
-  } else {
-    load_row<PixelType::F16>(row, y, options, scratch, counts);
+  const SimdKernels& simd = simd_kernels();
+  // The fast loader handles clean rows (every value finite and >= 0) of float RGB(A);
+  // any other row, or a row it finds unclean, takes the careful loader that counts.
+  const bool clean = row.type == PixelType::F32 && row.channels >= 3 && simd.load_clean_rgb_f32 &&
+                     simd.load_clean_rgb_f32(row, scratch, counts.max_value);
+  if (!clean) {
+    if (row.type == PixelType::F32) {
+      load_row<PixelType::F32>(row, y, options, scratch, counts);
+    } else {
+      load_row<PixelType::F16>(row, y, options, scratch, counts);
+    }
   }
-  for (int c = 0; c < 3; ++c) sums[c] = plane_sums(scratch.data() + c * row.width, columns, row.width);
+  for (int c = 0; c < 3; ++c) sums[c] = simd.plane_sums(scratch.data() + c * row.width, columns, row.width);
 }
 
 }  // namespace shpack::detail

@@ -1,0 +1,65 @@
+// Google Benchmark kernels of the equirect projection. Ratios between rows of one run are
+// what to quote (the machine is shared and noisy).
+#include <benchmark/benchmark.h>
+
+#include <random>
+#include <vector>
+
+#include "baseline_projection.h"
+#include "shpack/project.h"
+
+namespace {
+
+std::vector<float> random_rgb(unsigned width, unsigned height) {
+  std::mt19937_64 rng(0x5eed);
+  std::uniform_real_distribution<float> value(0.0f, 4.0f);
+  std::vector<float> rgb(std::size_t{3} * width * height);
+  for (float& v : rgb) v = value(rng);
+  return rgb;
+}
+
+void BM_ProjectEquirect(benchmark::State& state, shpack::Method method) {
+  const auto width = static_cast<unsigned>(state.range(0)), height = width / 2;
+  const auto threads = static_cast<unsigned>(state.range(1));
+  const std::vector<float> rgb = random_rgb(width, height);
+  shpack::ProjectOptions options;
+  options.method = method;
+  options.threads = threads;
+  for (auto _ : state) {
+    shpack::ShL2 sh;
+    if (!shpack::project_equirect(shpack::make_view(rgb.data(), width, height, 3), options, sh).ok())
+      state.SkipWithError("projection failed");
+    benchmark::DoNotOptimize(sh);
+  }
+  state.SetItemsProcessed(state.iterations() * width * height);
+  state.SetBytesProcessed(state.iterations() * width * height * 3 * sizeof(float));
+}
+BENCHMARK_CAPTURE(BM_ProjectEquirect, exact, shpack::Method::Exact)
+    ->Args({1024, 1})->Args({4096, 1})->Args({4096, 2})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ProjectEquirect, center, shpack::Method::Center)
+    ->Args({1024, 1})->Unit(benchmark::kMillisecond);
+
+// The floor: read and sum the same buffer once, in double.
+void BM_ReadSum(benchmark::State& state) {
+  const auto width = static_cast<unsigned>(state.range(0)), height = width / 2;
+  const std::vector<float> rgb = random_rgb(width, height);
+  for (auto _ : state) {
+    double sum = 0.0;
+    for (float v : rgb) sum += v;
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetBytesProcessed(state.iterations() * rgb.size() * sizeof(float));
+}
+BENCHMARK(BM_ReadSum)->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond);
+
+void BM_Baseline(benchmark::State& state) {
+  const auto width = static_cast<unsigned>(state.range(0)), height = width / 2;
+  const std::vector<float> rgb = random_rgb(width, height);
+  for (auto _ : state) benchmark::DoNotOptimize(shpack::bench::baseline_project(rgb.data(), width, height));
+  state.SetItemsProcessed(state.iterations() * width * height);
+}
+BENCHMARK(BM_Baseline)->Arg(1024)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
