@@ -1,0 +1,54 @@
+// window.h - deringing: per-band windows of L2 coefficients.
+//
+// L2 truncation of a small bright source rings: E/pi goes negative on a ring away from it
+// (for a directional light of irradiance E the minimum is -19 E / (480 pi), 122.2 degrees
+// from the light). A window multiplies band l by w_l (w_0 = 1, so L00 and the mean are
+// kept). It is a convolution with a zonal kernel, so it commutes with the cosine-lobe
+// convolution and can be applied to radiance, irradiance or Unity-form coefficients alike.
+//
+//  - WindowKind::Hanning, width W:  w_l = (1 + cos(pi l / W)) / 2 for l < W, else 0
+//    [2] "Stupid SH Tricks", sec. "Windowing".
+//  - WindowKind::Lanczos, width W:  w_l = sin(pi l / W) / (pi l / W) for l < W, else 0 [2].
+//  - WindowKind::Unity: (1, 0.922066, 0.731864), the factors Unity's path-tracing baker
+//    applies (ProbePostProcessing.compute); Unity applies them to direct light only, shpack
+//    to the whole environment it is given.
+//  - WindowKind::Sloan: P.-P. Sloan, "Deringing Spherical Harmonics" (2017): per channel,
+//    the widest window of the family w_l = sinc(pi l / W)^4 (as Filament's cmgen) whose
+//    result has a minimum of E/pi >= 0, found by bisection on W with the exact minimum of
+//    sh_minimum.h; a channel that does not ring is left unchanged. It is possible exactly
+//    when L00 >= 0 (W -> 0 leaves the constant L00); a channel with L00 < 0 is left
+//    unwindowed and reported.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "shpack/sh_basis.h"
+#include "shpack/status.h"
+
+namespace shpack {
+
+enum class WindowKind : std::uint8_t { None, Hanning, Lanczos, Unity, Sloan };
+
+struct Window {
+  WindowKind kind = WindowKind::None;
+  double width = 0;  // W, in bands, for Hanning and Lanczos (> 0)
+};
+
+// The factors (w_0, w_1, w_2) of a fixed window (not Sloan, which depends on the data).
+Status window_factors(const Window& window, std::array<double, 3>& factors) noexcept;
+
+// Multiplies band l of channel c by factors[c][l].
+ShL2 apply_band_factors(const ShL2& sh, const std::array<std::array<double, 3>, 3>& factors) noexcept;
+
+struct WindowResult {
+  std::array<std::array<double, 3>, 3> factors{};  // per channel, per band, as applied
+  std::array<bool, 3> impossible{};  // Sloan only: channel rings and has L00 < 0
+};
+
+// Windows Unity-form coefficients (the Sloan search needs E/pi, i.e. Unity form); apply
+// the same `result.factors` to the radiance coefficients to keep them consistent.
+Status apply_window(const ShL2& unity_form, const Window& window, ShL2& out,
+                    WindowResult* result = nullptr) noexcept;
+
+}  // namespace shpack

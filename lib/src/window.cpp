@@ -1,0 +1,97 @@
+#include "shpack/window.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "shpack/sh_minimum.h"
+
+namespace shpack {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// sin(x)/x, with its limit 1 at 0.
+double sinc(double x) noexcept { return x == 0.0 ? 1.0 : std::sin(x) / x; }
+
+// Sloan's family: w_l = sinc(pi l / W)^4 for l < W, else 0.
+std::array<double, 3> sloan_factors(double width) noexcept {
+  std::array<double, 3> f = {1.0, 0.0, 0.0};
+  for (int l = 1; l < 3; ++l)
+    if (l < width) f[l] = std::pow(sinc(kPi * l / width), 4);
+  return f;
+}
+
+double channel_minimum(const ShL2& sh, int channel, const std::array<double, 3>& f) noexcept {
+  ShL2 w;
+  for (int i = 0; i < kShCount; ++i) w.c[channel][i] = f[kBand[i]] * sh.c[channel][i];
+  return minimum_on_sphere(w, channel).value;
+}
+
+// The widest W with a non-negative minimum, by bisection on W in (1, W_hi]: at W <= 1 the
+// window leaves only L00 >= 0. W_hi = 1e6 makes w_l within 1e-11 of 1.
+std::array<double, 3> sloan_channel(const ShL2& sh, int channel, bool& impossible) noexcept {
+  impossible = false;
+  const std::array<double, 3> none = {1.0, 1.0, 1.0};
+  if (channel_minimum(sh, channel, none) >= 0.0) return none;
+  if (sh.c[channel][0] < 0.0) {
+    impossible = true;
+    return none;
+  }
+  double lo = 1.0, hi = 1e6;  // minimum(lo) >= 0 > minimum(hi)
+  for (int it = 0; it < 100 && hi - lo > 1e-12 * hi; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (channel_minimum(sh, channel, sloan_factors(mid)) >= 0.0 ? lo : hi) = mid;
+  }
+  return sloan_factors(lo);
+}
+
+}  // namespace
+
+Status window_factors(const Window& window, std::array<double, 3>& f) noexcept {
+  switch (window.kind) {
+    case WindowKind::None:
+      f = {1.0, 1.0, 1.0};
+      return Status::success();
+    case WindowKind::Unity:
+      f = {1.0, 0.922066, 0.731864};
+      return Status::success();
+    case WindowKind::Hanning:
+    case WindowKind::Lanczos:
+      if (!(window.width > 0.0) || !std::isfinite(window.width))
+        return Status::error(Errc::InvalidArgument, "window width must be a finite number > 0");
+      f = {1.0, 0.0, 0.0};
+      for (int l = 1; l < 3; ++l) {
+        if (l >= window.width) continue;
+        const double x = kPi * l / window.width;
+        f[l] = window.kind == WindowKind::Hanning ? 0.5 * (1.0 + std::cos(x)) : sinc(x);
+      }
+      return Status::success();
+    case WindowKind::Sloan:
+      return Status::error(Errc::InvalidArgument, "the sloan window depends on the data");
+  }
+  return Status::error(Errc::InvalidArgument, "unknown window");
+}
+
+ShL2 apply_band_factors(const ShL2& sh, const std::array<std::array<double, 3>, 3>& factors) noexcept {
+  ShL2 out;
+  for (int c = 0; c < kChannelCount; ++c)
+    for (int i = 0; i < kShCount; ++i) out.c[c][i] = factors[c][kBand[i]] * sh.c[c][i];
+  return out;
+}
+
+Status apply_window(const ShL2& unity_form, const Window& window, ShL2& out,
+                    WindowResult* result) noexcept {
+  WindowResult r;
+  if (window.kind == WindowKind::Sloan) {
+    for (int c = 0; c < kChannelCount; ++c) r.factors[c] = sloan_channel(unity_form, c, r.impossible[c]);
+  } else {
+    std::array<double, 3> f;
+    if (Status st = window_factors(window, f); !st.ok()) return st;
+    r.factors = {f, f, f};
+  }
+  out = apply_band_factors(unity_form, r.factors);
+  if (result != nullptr) *result = r;
+  return Status::success();
+}
+
+}  // namespace shpack
