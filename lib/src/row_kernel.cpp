@@ -87,9 +87,12 @@ void row_column_sums(const ImageView& row, std::uint32_t y, const ProjectOptions
                      const ColumnTables& columns, std::span<float> scratch,
                      TexelCounts& counts, ColumnSums (&sums)[3]) noexcept {
   const SimdKernels& simd = simd_kernels();
-  // The fast loader handles clean rows (every value finite and >= 0) of float RGB(A);
-  // any other row, or a row it finds unclean, takes the careful loader that counts.
-  const bool clean = row.type == PixelType::F32 && row.channels >= 3 && simd.load_clean_rgb_f32 &&
+  // The fast kernels handle clean rows (every value finite and >= 0) of float RGB(A);
+  // any other row, or a row they find unclean, takes the careful loader that counts.
+  const bool rgb_f32 = row.type == PixelType::F32 && row.channels >= 3;
+  if (rgb_f32 && simd.sum_clean_rgb_f32 && simd.sum_clean_rgb_f32(row, columns, sums, counts.max_value))
+    return;
+  const bool clean = rgb_f32 && simd.load_clean_rgb_f32 &&
                      simd.load_clean_rgb_f32(row, scratch, counts.max_value);
   if (!clean) {
     if (row.type == PixelType::F32) {

@@ -2,7 +2,7 @@
 //
 // The portable loops are the definition; the x86-64 AVX2 versions compute exactly the same
 // sums in exactly the same order (kSumLanes partial sums, lane k taking texels
-// i = k mod kSumLanes, combined as (l0 + l1) + (l2 + l3), separate multiply and add, no
+// i = k mod kSumLanes, combined pairwise as in lane_total, separate multiply and add, no
 // FMA), so the result is bit-identical whichever runs.
 #pragma once
 
@@ -13,10 +13,10 @@
 
 namespace shpack::detail {
 
-inline constexpr std::uint32_t kSumLanes = 4;
+inline constexpr std::uint32_t kSumLanes = 8;
 
-inline double lane_total(const double (&lanes)[kSumLanes]) noexcept {
-  return (lanes[0] + lanes[1]) + (lanes[2] + lanes[3]);
+inline double lane_total(const double (&l)[kSumLanes]) noexcept {
+  return ((l[0] + l[1]) + (l[2] + l[3])) + ((l[4] + l[5]) + (l[6] + l[7]));
 }
 
 ColumnSums plane_sums_portable(const float* v, const ColumnTables& t, std::uint32_t width) noexcept;
@@ -27,6 +27,10 @@ struct SimdKernels {
   // >= 0 (raising max_value), and returns true; returns false otherwise (planes undefined).
   // Null where no fast loader exists.
   bool (*load_clean_rgb_f32)(const ImageView&, std::span<float>, double& max_value) noexcept;
+  // Fused: the column sums of a clean float RGB(A) row straight from the interleaved
+  // pixels, true if the row was clean (as above); null where no fused kernel exists.
+  bool (*sum_clean_rgb_f32)(const ImageView&, const ColumnTables&, ColumnSums (&)[3],
+                            double& max_value) noexcept;
 };
 
 const SimdKernels& simd_kernels() noexcept;

@@ -1,0 +1,124 @@
+// cube_moments.h (private) - exact integrals of the L2 basis over cube-map texels.
+//
+// Geometry (conventions.h, kCubeFaceAxes). On a face with axes U, V and normal N, the point
+// p = N + a U + b V, (a, b) in [-1, 1]^2, has the direction d = p / r, r = sqrt(1 + a^2 + b^2).
+// Its solid-angle element is dw = da db / r^3: the area da db, foreshortened by cos = 1/r,
+// over the squared distance r^2. Texel (x, y) of an N x N face covers [a_x, a_x+1] x
+// [b_y, b_y+1] with the corner coordinates a_i = b_i = (2i - N)/N.
+//
+//        a = -1           a = +1
+//   b=-1  +----+----+----+      row 0 at the top; the local components of d are
+//         |    |    |    |      d_a = a/r, d_b = b/r, d_n = 1/r, and the world direction is
+//         +----+----+----+      d_a U + d_b V + d_n N. U, V, N are signed coordinate axes,
+//         |    |(x,y)    |      so each world coordinate is one local component with a
+//   b=+1  +----+----+----+      sign (FaceMap below).
+//
+// Homogenisation. A basis polynomial of degree l is a homogeneous polynomial on the unit
+// sphere once its constant is written as |d|^2 = 1 (3z^2 - 1 = 2z^2 - x^2 - y^2). Then
+// P(d) = P(p) / r^l and   int_texel P dw = int int P(a, b, 1) / r^(3 + l) da db.
+// Nine local moments span all that the L2 basis needs on any face:
+//
+//   k  integrand       local meaning      antiderivative F_k(a, b), d2F_k/(da db) = integrand
+//   0  1/r^3           1 (solid angle)    T = atan(ab / r)
+//   1  a/r^4           d_a                -atan(b/s_a) / (2 s_a)          s_a = sqrt(1 + a^2)
+//   2  b/r^4           d_b                -atan(a/s_b) / (2 s_b)          s_b = sqrt(1 + b^2)
+//   3  1/r^4           d_n                -(a F_1 + b F_2)
+//   4  ab/r^5          d_a d_b            1 / (3r)
+//   5  a/r^5           d_a d_n            -b / (3 s_a^2 r)
+//   6  b/r^5           d_b d_n            -a / (3 s_b^2 r)
+//   7  (a^2 - 1)/r^5   d_a^2 - d_n^2      -(ab / 3r) (2/s_a^2 + 1/s_b^2)
+//   8  (b^2 - 1)/r^5   d_b^2 - d_n^2      -(ab / 3r) (1/s_a^2 + 2/s_b^2)
+//
+// and a texel's moment is F(a1,b1) - F(a0,b1) - F(a1,b0) + F(a0,b0). Derivations (inner
+// integral over a at fixed b, c^2 = 1 + b^2, so r^2 = c^2 + a^2; then over b):
+//  0: the corner formula of conventions.md. With X = ab/r, dX/da = b c^2 / r^3 and
+//     r^2 + a^2 b^2 = s_a^2 c^2, so dT/da = b / (s_a^2 r), and d/db of that is
+//     (r^2 - b^2) / (s_a^2 r^3) = 1/r^3.
+//  1: int a r^-4 da = -1/(2 r^2) = -1/(2 (s_a^2 + b^2)); int db = -atan(b/s_a)/(2 s_a).
+//  2: the same with a and b exchanged.
+//  3: int (c^2 + a^2)^-2 da = a / (2 c^2 r^2) + atan(a/c) / (2 c^3). Over b, the first term
+//     by partial fractions, 1/((1+b^2)(s_a^2 + b^2)) = (1/a^2)(1/(1+b^2) - 1/(s_a^2 + b^2)),
+//     the second by parts with d/db (b/c) = 1/c^3; the atan(b) terms cancel and leave
+//     (1/2)[(b/s_b) atan(a/s_b) + (a/s_a) atan(b/s_a)] = -(a F_1 + b F_2).
+//  4: int ab r^-5 da = -b / (3 r^3); int db = 1/(3r).
+//  5: int a r^-5 da = -1/(3 r^3); int (s_a^2 + b^2)^(-3/2) db = b / (s_a^2 r), so -b/(3 s_a^2 r).
+//  6: the same with a and b exchanged.
+//  7, 8: int r^-5 da = a (2a^2 + 3c^2) / (3 c^4 r^3) and int a^2 r^-5 da = a^3 / (3 c^2 r^3);
+//     over b these give int int a^2/r^5 = (T - E_a)/3, int int b^2/r^5 = (T - E_b)/3 and
+//     int int 1/r^5 = (T + E_a + E_b)/3 with E_a = ab/(s_a^2 r), E_b = ab/(s_b^2 r) (their sum
+//     is T, the antiderivative of 1/r^3, as a^2 + b^2 + 1 = r^2). In every traceless
+//     combination - all that band 2 needs - the atan cancels: (a^2 - 1)/r^5 <-> -(2E_a + E_b)/3.
+// Each d2F/(da db) was checked symbolically (sympy, zero residual), and every texel integral
+// is checked against tensor Gauss-Legendre quadrature in tests/unit/project_cube_test.cpp.
+//
+// Cancellation, and how it is avoided. The corner values F are O(1) but a texel's moment is
+// O(h^2) with h = 2/N, so differencing rounded corner values costs a relative error of
+// about 4 u |F| / (h^2 |f|) (u = 2^-53): about 1e-8 of a corner texel's solid angle at
+// N = 4096 (measured 1.3e-8, see the report in project_cube.h). Instead each edge difference
+// D_k(b) = F_k(a1, b) - F_k(a0, b) along a row of corners is evaluated in a form without
+// cancellation (edge_differences below), and a texel's moment is D_k(b1) - D_k(b0): D is
+// O(h) and accurate to a few u relative to its size, so the one remaining subtraction
+// costs about u |D| / |dD| ~ u / h: measured at most 3e-13 of the texel's solid angle at
+// N = 4096 (tests/unit/project_cube_test.cpp states the numbers and the tolerance).
+// Summed over a column the b-differences telescope, so sums over many texels (4 pi) are
+// accurate to a few u whatever N.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "shpack/conventions.h"
+#include "shpack/sh_basis.h"
+
+namespace shpack::detail {
+
+inline constexpr int kCubeMoments = 9;
+using CubeMoments = std::array<double, kCubeMoments>;
+
+// Corner coordinate i of an N x N face: (2i - N)/N, correctly rounded, so a_(N-i) = -a_i.
+inline double cube_corner_coordinate(std::uint32_t i, std::uint32_t n) noexcept {
+  return (2.0 * i - static_cast<double>(n)) / n;
+}
+
+// The nine edge differences D_k(b) = F_k(a1, b) - F_k(a0, b), without cancellation.
+CubeMoments edge_differences(double a0, double a1, double b) noexcept;
+
+// Only D_0 (the solid-angle antiderivative), for Method::Center.
+double solid_angle_edge_difference(double a0, double a1, double b) noexcept;
+
+// Method::Center: the local moments of a texel of exact solid angle `omega` whose centre
+// is (a, b): omega times the integrand's direction polynomial at the centre.
+CubeMoments center_moments(double omega, double a, double b) noexcept;
+
+// Which local component (0 = a, 1 = b, 2 = n) and sign give each world coordinate
+// x, y, z on a face: world_j = sign_j * d_(local_j).
+struct FaceMap {
+  std::array<int, 3> local;
+  std::array<double, 3> sign;
+};
+
+constexpr FaceMap face_map(const CubeFaceAxes& f) noexcept {
+  FaceMap m{};
+  const Dir3 axes[3] = {f.u_axis, f.v_axis, f.normal};
+  for (int j = 0; j < 3; ++j) {
+    for (int l = 0; l < 3; ++l) {
+      const double c = j == 0 ? axes[l].x : j == 1 ? axes[l].y : axes[l].z;
+      if (c != 0.0) {
+        m.local[j] = l;
+        m.sign[j] = c;
+      }
+    }
+  }
+  return m;
+}
+
+// The integrals of the nine basis polynomials P_i (sh_basis.h, without k_i) over a region
+// of face `map` whose local moments are `m`. With world_j = s_j d_(l_j):
+//   P1 = y, P2 = z, P3 = x          -> s_j * moment of d_(l_j)            (k = 1, 2, 3)
+//   P4 = xy, P5 = yz, P7 = xz       -> s_j s_k * moment of d_(l_j) d_(l_k) (k = 4, 5, 6)
+//   P6 = 2z^2 - x^2 - y^2, P8 = x^2 - y^2: traceless, so with Q(l) = moment of
+//   d_l^2 - d_n^2 (k = 7, 8, and 0 for l = n): P6 -> 2Q(l_z) - Q(l_x) - Q(l_y),
+//   P8 -> Q(l_x) - Q(l_y).
+std::array<double, kShCount> face_basis_integrals(const FaceMap& map, const CubeMoments& m) noexcept;
+
+}  // namespace shpack::detail
