@@ -4,33 +4,51 @@
 
 namespace shpack::detail {
 
-CubeMoments edge_differences(double a0, double a1, double b) noexcept {
+CubeCorner exact_corner(double a, const CornerRow& row) noexcept {
+  const double s_sq = 1.0 + a * a, s = std::sqrt(s_sq), r = std::sqrt(row.q + a * a);
+  return {a, s_sq, s, r, a * row.b / r, std::atan(row.b / s)};
+}
+
+CubeCorner solid_angle_corner(double a, const CornerRow& row) noexcept {
+  const double r = std::sqrt(row.q + a * a);
+  return {a, 0.0, 0.0, r, a * row.b / r, 0.0};
+}
+
+namespace {
+
+// rho = a1/r1 - a0/r0. If a0, a1 have the same sign the two terms nearly cancel; then
+// a1 r0 - a0 r1 = (a1^2 r0^2 - a0^2 r1^2) / (a1 r0 + a0 r1) and
+// a1^2 (q + a0^2) - a0^2 (q + a1^2) = q h sigma, a product of like-signed terms
+// (h = a1 - a0, sigma = a1 + a0). Otherwise the direct form adds like-signed terms.
+double a_over_r_difference(const CubeCorner& c0, const CubeCorner& c1, double q) noexcept {
+  const double a0 = c0.a, a1 = c1.a, r0 = c0.r, r1 = c1.r;
+  return a0 * a1 > 0.0 ? q * (a1 - a0) * (a1 + a0) / (r0 * r1 * (a1 * r0 + a0 * r1)) : a1 / r1 - a0 / r0;
+}
+
+// k = 0, T = atan(X), X = ab/r: atan X1 - atan X0 = atan2(X1 - X0, 1 + X0 X1), valid as
+// |X| < 1 on the face (|ab| <= 1 < r), with X1 - X0 = b rho.
+double solid_angle_difference(const CubeCorner& c0, const CubeCorner& c1, const CornerRow& row, double rho) noexcept {
+  return std::atan2(row.b * rho, 1.0 + c0.x * c1.x);
+}
+
+}  // namespace
+
+CubeMoments edge_differences(const CubeCorner& c0, const CubeCorner& c1, const CornerRow& row) noexcept {
   // Notation: q = 1 + b^2 = s_b^2, r_i = sqrt(q + a_i^2), s_i = sqrt(1 + a_i^2),
   // h = a1 - a0, sigma = a1 + a0 (so a1^2 - a0^2 = h sigma, without cancellation).
-  const double q = 1.0 + b * b, sb = std::sqrt(q);
-  const double s0_sq = 1.0 + a0 * a0, s1_sq = 1.0 + a1 * a1;
-  const double s0 = std::sqrt(s0_sq), s1 = std::sqrt(s1_sq);
-  const double r0 = std::sqrt(q + a0 * a0), r1 = std::sqrt(q + a1 * a1);
+  const double b = row.b, q = row.q, sb = row.sb;
+  const double a0 = c0.a, a1 = c1.a, s0 = c0.s, s1 = c1.s, s0_sq = c0.s_sq, s1_sq = c1.s_sq;
+  const double r0 = c0.r, r1 = c1.r;
   const double h = a1 - a0, sigma = a1 + a0;
-
-  // rho = a1/r1 - a0/r0. If a0, a1 have the same sign the two terms nearly cancel; then
-  // a1 r0 - a0 r1 = (a1^2 r0^2 - a0^2 r1^2) / (a1 r0 + a0 r1) and
-  // a1^2 (q + a0^2) - a0^2 (q + a1^2) = q h sigma, a sum of like-signed terms. Otherwise
-  // the direct form adds two like-signed terms.
-  const double rho = a0 * a1 > 0.0 ? q * h * sigma / (r0 * r1 * (a1 * r0 + a0 * r1))
-                                   : a1 / r1 - a0 / r0;
-
-  // k = 0, T = atan(X), X = ab/r: atan X1 - atan X0 = atan2(X1 - X0, 1 + X0 X1), valid as
-  // |X| < 1 on the face (|ab| <= 1 < r), with X1 - X0 = b rho.
-  const double x0 = a0 * b / r0, x1 = a1 * b / r1;
-  const double d_solid = std::atan2(b * rho, 1.0 + x0 * x1);
+  const double rho = a_over_r_difference(c0, c1, q);
+  const double d_solid = solid_angle_difference(c0, c1, row, rho);
 
   // k = 1, F_1 = -g(s)/2 with g(s) = atan(b/s)/s. g1 - g0 = delta/s1 - atan(b/s0) ds/(s0 s1)
   // with ds = s1 - s0 = h sigma / (s0 + s1) and delta = atan(b/s1) - atan(b/s0)
   // = atan2(-b ds, s0 s1 + b^2); the two terms have the same sign (both have the sign of
   // -b ds), so they add without cancellation.
   const double ds = h * sigma / (s0 + s1);
-  const double t0 = std::atan(b / s0);
+  const double t0 = c0.atan_b_over_s;
   const double delta = std::atan2(-b * ds, s0 * s1 + b * b);
   const double d_g = delta / s1 - t0 * ds / (s0 * s1);
   const double d1 = -0.5 * d_g;
@@ -65,15 +83,23 @@ CubeMoments edge_differences(double a0, double a1, double b) noexcept {
   };
 }
 
-double solid_angle_edge_difference(double a0, double a1, double b) noexcept {
-  // k = 0 of edge_differences, the same arithmetic.
-  const double q = 1.0 + b * b;
-  const double r0 = std::sqrt(q + a0 * a0), r1 = std::sqrt(q + a1 * a1);
-  const double h = a1 - a0, sigma = a1 + a0;
-  const double rho = a0 * a1 > 0.0 ? q * h * sigma / (r0 * r1 * (a1 * r0 + a0 * r1))
-                                   : a1 / r1 - a0 / r0;
-  const double x0 = a0 * b / r0, x1 = a1 * b / r1;
-  return std::atan2(b * rho, 1.0 + x0 * x1);
+double solid_angle_edge_difference(const CubeCorner& c0, const CubeCorner& c1, const CornerRow& row) noexcept {
+  return solid_angle_difference(c0, c1, row, a_over_r_difference(c0, c1, row.q));
+}
+
+CubeMoments edge_terms(bool exact, std::uint32_t x, std::uint32_t n, const CornerRow& row) noexcept {
+  const bool mirrored = x >= first_mirrored_edge(n);
+  const std::uint32_t e = mirrored ? n - 1 - x : x;
+  const double a0 = cube_corner_coordinate(e, n), a1 = cube_corner_coordinate(e + 1, n);
+  CubeMoments d{};
+  if (exact) {
+    d = edge_differences(exact_corner(a0, row), exact_corner(a1, row), row);
+  } else {
+    d[0] = solid_angle_edge_difference(solid_angle_corner(a0, row), solid_angle_corner(a1, row), row);
+  }
+  if (mirrored)
+    for (int k = 0; k < kCubeMoments; ++k) d[k] *= kMirrorEdgeSign[k];
+  return d;
 }
 
 CubeMoments center_moments(double omega, double a, double b) noexcept {

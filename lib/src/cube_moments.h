@@ -6,12 +6,14 @@
 // over the squared distance r^2. Texel (x, y) of an N x N face covers [a_x, a_x+1] x
 // [b_y, b_y+1] with the corner coordinates a_i = b_i = (2i - N)/N.
 //
-//        a = -1           a = +1
-//   b=-1  +----+----+----+      row 0 at the top; the local components of d are
-//         |    |    |    |      d_a = a/r, d_b = b/r, d_n = 1/r, and the world direction is
-//         +----+----+----+      d_a U + d_b V + d_n N. U, V, N are signed coordinate axes,
-//         |    |(x,y)    |      so each world coordinate is one local component with a
-//   b=+1  +----+----+----+      sign (FaceMap below).
+//            a = -1          a = +1
+//   b = -1    +-----+-----+-----+     row y = 0 at the top, column x = 0 at the left.
+//             |     |     |     |     The local components of d are d_a = a/r, d_b = b/r,
+//             +-----+-----+-----+     d_n = 1/r, and the world direction is
+//             |     | x,y |     |     d_a U + d_b V + d_n N. U, V, N are signed coordinate
+//             +-----+-----+-----+     axes, so each world coordinate is one local
+//             |     |     |     |     component with a sign (FaceMap below).
+//   b = +1    +-----+-----+-----+
 //
 // Homogenisation. A basis polynomial of degree l is a homogeneous polynomial on the unit
 // sphere once its constant is written as |d|^2 = 1 (3z^2 - 1 = 2z^2 - x^2 - y^2). Then
@@ -53,18 +55,22 @@
 //
 // Cancellation, and how it is avoided. The corner values F are O(1) but a texel's moment is
 // O(h^2) with h = 2/N, so differencing rounded corner values costs a relative error of
-// about 4 u |F| / (h^2 |f|) (u = 2^-53): about 1e-8 of a corner texel's solid angle at
-// N = 4096 (measured 1.3e-8, see the report in project_cube.h). Instead each edge difference
-// D_k(b) = F_k(a1, b) - F_k(a0, b) along a row of corners is evaluated in a form without
-// cancellation (edge_differences below), and a texel's moment is D_k(b1) - D_k(b0): D is
-// O(h) and accurate to a few u relative to its size, so the one remaining subtraction
-// costs about u |D| / |dD| ~ u / h: measured at most 3e-13 of the texel's solid angle at
-// N = 4096 (tests/unit/project_cube_test.cpp states the numbers and the tolerance).
+// about 4 u |F| / (h^2 |f|) (u = 2^-53). Measured against quadrature, in units of the
+// texel's solid angle: 2.4e-14 at N = 16, 3.8e-10 at N = 1024, 1.2e-9 at N = 4096 - too
+// much for "exact". Instead each edge difference D_k(b) = F_k(a1, b) - F_k(a0, b) along a
+// row of corners is evaluated in a form without cancellation (edge_differences below), and
+// a texel's moment is D_k(b1) - D_k(b0): D is O(h) and accurate to a few u of its size, so
+// the one remaining subtraction costs about u |D| / |dD| ~ u / h. Measured: 1.6e-16 at
+// N = 1, 3.6e-15 at N = 16, 3.2e-13 at N = 1024, 9.7e-13 at N = 4096; per basis function
+// (in units of k_i Omega) at most ~10 u/h, 1.6e-12 at N = 4096
+// (tests/unit/project_cube_test.cpp pins this with a 32 u/h bound). The D_k are shared by
+// the two texel rows on either side of a corner row and by all six faces.
 // Summed over a column the b-differences telescope, so sums over many texels (4 pi) are
 // accurate to a few u whatever N.
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 #include "shpack/conventions.h"
@@ -80,11 +86,42 @@ inline double cube_corner_coordinate(std::uint32_t i, std::uint32_t n) noexcept 
   return (2.0 * i - static_cast<double>(n)) / n;
 }
 
-// The nine edge differences D_k(b) = F_k(a1, b) - F_k(a0, b), without cancellation.
-CubeMoments edge_differences(double a0, double a1, double b) noexcept;
+// What a row of corners at height b shares: q = 1 + b^2 = s_b^2.
+struct CornerRow {
+  double b, q, sb;
+};
+inline CornerRow corner_row(double b) noexcept {
+  const double q = 1.0 + b * b;
+  return {b, q, std::sqrt(q)};
+}
 
-// Only D_0 (the solid-angle antiderivative), for Method::Center.
-double solid_angle_edge_difference(double a0, double a1, double b) noexcept;
+// What the two edges meeting at corner (a, b) share: s^2 = 1 + a^2, s, r, X = ab/r, and
+// (Exact only) atan(b/s). Computed the same way wherever a corner is needed, so a texel's
+// weights do not depend on whether its corners were cached.
+struct CubeCorner {
+  double a, s_sq, s, r, x, atan_b_over_s;
+};
+CubeCorner exact_corner(double a, const CornerRow& row) noexcept;
+CubeCorner solid_angle_corner(double a, const CornerRow& row) noexcept;  // a, r, x only
+
+// The nine edge differences D_k(b) = F_k(a1, b) - F_k(a0, b) between corners c0 (a0) and
+// c1 (a1) of an exact_corner row, without cancellation.
+CubeMoments edge_differences(const CubeCorner& c0, const CubeCorner& c1, const CornerRow& row) noexcept;
+
+// Only D_0 (the solid-angle antiderivative), for Method::Center; the same arithmetic as
+// D_0 of edge_differences, so both methods give a texel the same solid angle.
+double solid_angle_edge_difference(const CubeCorner& c0, const CubeCorner& c1, const CornerRow& row) noexcept;
+
+// Mirror symmetry a -> -a. Corner coordinates are exactly antisymmetric (a_(N-i) = -a_i),
+// so edge N-1-x is edge x mirrored, and as F_k(-a, b) = p_k F_k(a, b) its difference is
+// D_k(N-1-x) = F_k(-a_x) - F_k(-a_(x+1)) = -p_k D_k(x). F_0, F_2, F_3, F_6, F_7, F_8 are
+// odd in a (p = -1), F_1, F_4, F_5 even (p = +1). Only edges x < (N+1)/2 are evaluated.
+inline constexpr CubeMoments kMirrorEdgeSign = {1, -1, 1, 1, -1, -1, 1, 1, 1};
+inline std::uint32_t first_mirrored_edge(std::uint32_t n) noexcept { return (n + 1) / 2; }
+
+// Edge x (corners x, x + 1) of an N-edge row: evaluated for x < first_mirrored_edge(n),
+// mirrored from edge n-1-x otherwise. Exact: the nine D_k; Center: D_0 in element 0.
+CubeMoments edge_terms(bool exact, std::uint32_t x, std::uint32_t n, const CornerRow& row) noexcept;
 
 // Method::Center: the local moments of a texel of exact solid angle `omega` whose centre
 // is (a, b): omega times the integrand's direction polynomial at the centre.

@@ -32,17 +32,32 @@ struct Tile {
   detail::TexelCounts counts[kCubeFaceCount];
 };
 
-// Edge terms of corner row b (coordinate of row k of corners): out[k * n + x] holds term k
-// of edge [a_x, a_x+1]. Exact: the nine D_k; Center: D_0 only.
+// Edge terms of the corner row at height b: out[k * n + x] holds term k of edge x
+// (corners x, x + 1). Exact: the nine D_k; Center: D_0 only. Corner values are shared by
+// the two edges that meet there, and edges x >= (n+1)/2 are mirrored (cube_moments.h), with
+// the same arithmetic as detail::edge_terms.
 void edge_row(Method method, double b, std::uint32_t n, double* out) noexcept {
-  for (std::uint32_t x = 0; x < n; ++x) {
-    const double a0 = detail::cube_corner_coordinate(x, n), a1 = detail::cube_corner_coordinate(x + 1, n);
-    if (method == Method::Exact) {
-      const CubeMoments d = detail::edge_differences(a0, a1, b);
-      for (int k = 0; k < kCubeMoments; ++k) out[k * std::size_t{n} + x] = d[k];
-    } else {
-      out[x] = detail::solid_angle_edge_difference(a0, a1, b);
+  const detail::CornerRow row = detail::corner_row(b);
+  const std::uint32_t half = detail::first_mirrored_edge(n);
+  const std::size_t stride = n;
+  if (method == Method::Exact) {
+    detail::CubeCorner c0 = detail::exact_corner(detail::cube_corner_coordinate(0, n), row);
+    for (std::uint32_t x = 0; x < half; ++x) {
+      const detail::CubeCorner c1 = detail::exact_corner(detail::cube_corner_coordinate(x + 1, n), row);
+      const CubeMoments d = detail::edge_differences(c0, c1, row);
+      for (int k = 0; k < kCubeMoments; ++k) out[k * stride + x] = d[k];
+      c0 = c1;
     }
+    for (std::uint32_t x = half; x < n; ++x)
+      for (int k = 0; k < kCubeMoments; ++k) out[k * stride + x] = out[k * stride + (n - 1 - x)] * detail::kMirrorEdgeSign[k];
+  } else {
+    detail::CubeCorner c0 = detail::solid_angle_corner(detail::cube_corner_coordinate(0, n), row);
+    for (std::uint32_t x = 0; x < half; ++x) {
+      const detail::CubeCorner c1 = detail::solid_angle_corner(detail::cube_corner_coordinate(x + 1, n), row);
+      out[x] = detail::solid_angle_edge_difference(c0, c1, row);
+      c0 = c1;
+    }
+    for (std::uint32_t x = half; x < n; ++x) out[x] = out[n - 1 - x] * detail::kMirrorEdgeSign[0];
   }
 }
 
@@ -62,19 +77,29 @@ void moment_row(Method method, const double* top, const double* bottom, std::uin
   }
 }
 
-// The nine dot products of one channel plane with the moment rows. Four partial sums per
-// moment (texels x = 0, 1, 2, 3 mod 4), combined pairwise: a fixed order on any machine.
-void plane_moment_sums(const float* v, const double* m, std::uint32_t n,
-                       double (&out)[kCubeMoments]) noexcept {
-  constexpr std::uint32_t kLanes = 4;
+// The 3 x 9 dot products of a face row (three channel planes of n floats) with the nine
+// moment rows. Each weight is loaded once for the three channels. Four partial sums per
+// product (lane l takes texels x = l mod 4), combined as (l0 + l1) + (l2 + l3): a fixed order
+// on any machine. 64-bit indices and named scalars keep the twelve accumulators in registers.
+void row_moment_sums(const float* planes, const double* moments, std::size_t n,
+                     double (&out)[kChannelCount][kCubeMoments]) noexcept {
+  const float *red = planes, *green = planes + n, *blue = planes + 2 * n;
   for (int k = 0; k < kCubeMoments; ++k) {
-    const double* row = m + k * std::size_t{n};
-    double lane[kLanes] = {};
-    std::uint32_t x = 0;
-    for (; x + kLanes <= n; x += kLanes)
-      for (std::uint32_t l = 0; l < kLanes; ++l) lane[l] += static_cast<double>(v[x + l]) * row[x + l];
-    for (std::uint32_t l = 0; x < n; ++x, ++l) lane[l] += static_cast<double>(v[x]) * row[x];
-    out[k] = (lane[0] + lane[1]) + (lane[2] + lane[3]);
+    const double* w = moments + k * n;
+    double r0 = 0, r1 = 0, r2 = 0, r3 = 0, g0 = 0, g1 = 0, g2 = 0, g3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0;
+    std::size_t x = 0;
+    for (; x + 4 <= n; x += 4) {
+      const double w0 = w[x], w1 = w[x + 1], w2 = w[x + 2], w3 = w[x + 3];
+      r0 += red[x] * w0, r1 += red[x + 1] * w1, r2 += red[x + 2] * w2, r3 += red[x + 3] * w3;
+      g0 += green[x] * w0, g1 += green[x + 1] * w1, g2 += green[x + 2] * w2, g3 += green[x + 3] * w3;
+      b0 += blue[x] * w0, b1 += blue[x + 1] * w1, b2 += blue[x + 2] * w2, b3 += blue[x + 3] * w3;
+    }
+    if (x < n) r0 += red[x] * w[x], g0 += green[x] * w[x], b0 += blue[x] * w[x], ++x;
+    if (x < n) r1 += red[x] * w[x], g1 += green[x] * w[x], b1 += blue[x] * w[x], ++x;
+    if (x < n) r2 += red[x] * w[x], g2 += green[x] * w[x], b2 += blue[x] * w[x];
+    out[0][k] = (r0 + r1) + (r2 + r3);
+    out[1][k] = (g0 + g1) + (g2 + g3);
+    out[2][k] = (b0 + b1) + (b2 + b3);
   }
 }
 
@@ -105,11 +130,10 @@ struct Job {
       moment_row(method, top, bottom, y, n, moments);
       for (int f = 0; f < kCubeFaceCount; ++f) {
         detail::load_row_planes(faces[f].rows(y, 1), y, options, planes, tile.counts[f]);
-        for (int c = 0; c < kChannelCount; ++c) {
-          double sums[kCubeMoments];
-          plane_moment_sums(planes.data() + c * std::size_t{n}, moments, n, sums);
-          for (int k = 0; k < kCubeMoments; ++k) tile.moments[f][c][k].add(sums[k]);
-        }
+        double sums[kChannelCount][kCubeMoments];
+        row_moment_sums(planes.data(), moments, n, sums);
+        for (int c = 0; c < kChannelCount; ++c)
+          for (int k = 0; k < kCubeMoments; ++k) tile.moments[f][c][k].add(sums[c][k]);
       }
       std::swap(top, bottom);
     }
@@ -207,16 +231,15 @@ Status cube_texel_basis_integrals(std::uint32_t size, CubeFace face, std::uint32
     return Status::error(Errc::InvalidArgument, "texel or face outside the cube");
   if (method != Method::Exact && method != Method::Center)
     return Status::error(Errc::InvalidArgument, "unknown projection method");
-  const double a0 = detail::cube_corner_coordinate(x, size), a1 = detail::cube_corner_coordinate(x + 1, size);
-  const double b0 = detail::cube_corner_coordinate(y, size), b1 = detail::cube_corner_coordinate(y + 1, size);
+  const bool exact = method == Method::Exact;
+  const CubeMoments top = detail::edge_terms(exact, x, size, detail::corner_row(detail::cube_corner_coordinate(y, size)));
+  const CubeMoments bottom =
+      detail::edge_terms(exact, x, size, detail::corner_row(detail::cube_corner_coordinate(y + 1, size)));
   CubeMoments m{};
-  if (method == Method::Exact) {
-    const CubeMoments top = detail::edge_differences(a0, a1, b0), bottom = detail::edge_differences(a0, a1, b1);
+  if (exact) {
     for (int k = 0; k < kCubeMoments; ++k) m[k] = bottom[k] - top[k];
   } else {
-    const double omega = detail::solid_angle_edge_difference(a0, a1, b1) -
-                         detail::solid_angle_edge_difference(a0, a1, b0);
-    m = detail::center_moments(omega, (2.0 * x + 1.0 - size) / size, (2.0 * y + 1.0 - size) / size);
+    m = detail::center_moments(bottom[0] - top[0], (2.0 * x + 1.0 - size) / size, (2.0 * y + 1.0 - size) / size);
   }
   const std::array<double, kShCount> p = detail::face_basis_integrals(kFaceMaps[f], m);
   for (int i = 0; i < kShCount; ++i) out[i] = kBasisScale[i] * p[i];

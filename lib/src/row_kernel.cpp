@@ -83,6 +83,22 @@ void TexelCounts::merge_after(const TexelCounts& later) noexcept {
   max_value = std::max(max_value, later.max_value);
 }
 
+void load_row_planes(const ImageView& row, std::uint32_t y, const ProjectOptions& options,
+                     std::span<float> scratch, TexelCounts& counts) noexcept {
+  const SimdKernels& simd = simd_kernels();
+  // The fast loader handles clean rows (every value finite and >= 0) of float RGB(A);
+  // any other row, or a row it finds unclean, takes the careful loader that counts.
+  const bool clean = row.type == PixelType::F32 && row.channels >= 3 && simd.load_clean_rgb_f32 &&
+                     simd.load_clean_rgb_f32(row, scratch, counts.max_value);
+  if (!clean) {
+    if (row.type == PixelType::F32) {
+      load_row<PixelType::F32>(row, y, options, scratch, counts);
+    } else {
+      load_row<PixelType::F16>(row, y, options, scratch, counts);
+    }
+  }
+}
+
 void row_column_sums(const ImageView& row, std::uint32_t y, const ProjectOptions& options,
                      const ColumnTables& columns, std::span<float> scratch,
                      TexelCounts& counts, ColumnSums (&sums)[3]) noexcept {
@@ -92,15 +108,7 @@ void row_column_sums(const ImageView& row, std::uint32_t y, const ProjectOptions
   const bool rgb_f32 = row.type == PixelType::F32 && row.channels >= 3;
   if (rgb_f32 && simd.sum_clean_rgb_f32 && simd.sum_clean_rgb_f32(row, columns, sums, counts.max_value))
     return;
-  const bool clean = rgb_f32 && simd.load_clean_rgb_f32 &&
-                     simd.load_clean_rgb_f32(row, scratch, counts.max_value);
-  if (!clean) {
-    if (row.type == PixelType::F32) {
-      load_row<PixelType::F32>(row, y, options, scratch, counts);
-    } else {
-      load_row<PixelType::F16>(row, y, options, scratch, counts);
-    }
-  }
+  load_row_planes(row, y, options, scratch, counts);
   for (int c = 0; c < 3; ++c) sums[c] = simd.plane_sums(scratch.data() + c * row.width, columns, row.width);
 }
 

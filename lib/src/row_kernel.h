@@ -30,8 +30,15 @@ struct ColumnSums {
 };
 
 // Reads row `y` (a resolved view of exactly that row) into `scratch` (3 * width floats,
-// channel planes R, G, B) applying the options' NaN/Inf and negative policies, counts into
-// `counts`, and returns the column sums of each channel.
+// channel planes R, G, B, `width` each) applying the options' NaN/Inf and negative
+// policies, and counts into `counts`. A grey image (1 or 2 channels) fills all three
+// planes from channel 0; under NonFinite::Error a NaN/Inf texel is stored as 0 (the caller
+// fails). Shared by the equirect and cube projections.
+void load_row_planes(const ImageView& row, std::uint32_t y, const ProjectOptions& options,
+                     std::span<float> scratch, TexelCounts& counts) noexcept;
+
+// As load_row_planes (or a fused kernel with the same result), then the column sums of
+// each channel.
 void row_column_sums(const ImageView& row, std::uint32_t y, const ProjectOptions& options,
                      const ColumnTables& columns, std::span<float> scratch,
                      TexelCounts& counts, ColumnSums (&sums)[3]) noexcept;

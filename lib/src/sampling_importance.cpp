@@ -47,24 +47,33 @@ double row_solid_angle(std::uint32_t j, std::uint32_t height, std::uint32_t widt
 }  // namespace
 
 Status project_importance(const ImageView& image, std::uint32_t n, std::uint64_t seed,
-                          const ProjectOptions& options, ShL2& radiance, ProjectStats* stats) noexcept {
+                          const ProjectOptions& options, ShL2& radiance,
+                          ProjectStats* stats) noexcept {
   const std::uint32_t width = image.width, height = image.height;
   std::vector<double> cdf;
+  std::vector<float> planes;
   try {
     cdf.resize(std::size_t{width} * height);
+    planes.resize(std::size_t{3} * width);
   } catch (const std::bad_alloc&) {
     return Status::error(Errc::OutOfMemory, "cannot allocate the importance-sampling CDF");
   }
 
-  // Pass 1: every texel once (this is where the value policies and ProjectStats come from),
-  // cdf[t] = max(lum_t, 0) Omega_t for now.
-  TexelReader reader(image, options);
-  std::array<double, 3> rgb;
+  // Pass 1: every texel once, row by row with the row loader of project_equirect (this is
+  // where the value policies and ProjectStats come from); cdf[t] = max(lum_t, 0) Omega_t.
+  TexelCounts counts;
   NeumaierSum luminance_integral;
   for (std::uint32_t y = 0; y < height; ++y) {
+    TexelCounts row_counts;
+    load_row_planes(image.rows(y, 1), y, options, planes, row_counts);
+    counts.merge_after(row_counts);
+    if (row_counts.nonfinite != 0 && options.nonfinite == NonFinite::Error)
+      return Status::error(Errc::NonFiniteTexel, "NaN or Inf texel", counts.first_nonfinite_x,
+                           counts.first_nonfinite_y);
     const double omega = row_solid_angle(y, height, width);
     for (std::uint32_t x = 0; x < width; ++x) {
-      if (!reader.read(x, y, rgb)) return reader.nonfinite_error();
+      const std::array<double, 3> rgb = {planes[x], planes[width + x],
+                                         planes[2 * std::size_t{width} + x]};
       const double q = std::max(luminance(rgb), 0.0) * omega;
       cdf[std::size_t{y} * width + x] = q;
       luminance_integral.add(q);
@@ -90,6 +99,7 @@ Status project_importance(const ImageView& image, std::uint32_t n, std::uint64_t
   std::mt19937_64 rng(seed);
   TexelReader sample_reader(image, options);
   SampleSum sum;
+  std::array<double, 3> rgb;
   for (std::uint32_t k = 0; k < n; ++k) {
     const double target = uniform01(rng) * total;
     const auto it = std::upper_bound(cdf.begin(), cdf.end(), target);
@@ -108,9 +118,8 @@ Status project_importance(const ImageView& image, std::uint32_t n, std::uint64_t
     sum.add(d, row_solid_angle(y, height, width) * (total / p), rgb);
   }
   radiance = sum.result(1.0 / n);
-  if (stats != nullptr) *stats = stats_from_counts(reader.counts());
+  if (stats != nullptr) *stats = stats_from_counts(counts);
   return Status::success();
 }
 
 }  // namespace shpack::detail
-

@@ -10,7 +10,8 @@
 namespace shpack::detail {
 
 Status project_point_set(const ImageView& image, const MethodSpec& spec,
-                         const ProjectOptions& options, ShL2& radiance, ProjectStats* stats) noexcept {
+                         const ProjectOptions& options, ShL2& radiance,
+                         ProjectStats* stats) noexcept {
   const std::uint32_t n = spec.param;
   const double scale = 4.0 * std::numbers::pi / n;
   switch (spec.method) {

@@ -21,7 +21,9 @@ Dir3 point_at(double y, double lon) noexcept {
 
 }  // namespace
 
-Dir3 sphere_point(double u1, double u2) noexcept { return point_at(1.0 - 2.0 * u1, 2.0 * kPi * u2); }
+Dir3 sphere_point(double u1, double u2) noexcept {
+  return point_at(1.0 - 2.0 * u1, 2.0 * kPi * u2);
+}
 
 SobolPoint sobol_point(std::uint32_t k, std::uint32_t shift1, std::uint32_t shift2) noexcept {
   std::uint32_t radical = 0, sobol = 0, v = 1u << 31;

@@ -18,11 +18,13 @@ Status project_mip(const ImageView& image, std::uint32_t levels, const ProjectOp
 
 // mc:N, qmc:N, fib:N: equal weights 4 pi / N (sampling_point_sets.cpp).
 Status project_point_set(const ImageView& image, const MethodSpec& spec,
-                         const ProjectOptions& options, ShL2& radiance, ProjectStats* stats) noexcept;
+                         const ProjectOptions& options, ShL2& radiance,
+                         ProjectStats* stats) noexcept;
 
 // is:N (sampling_importance.cpp).
 Status project_importance(const ImageView& image, std::uint32_t n, std::uint64_t seed,
-                          const ProjectOptions& options, ShL2& radiance, ProjectStats* stats) noexcept;
+                          const ProjectOptions& options, ShL2& radiance,
+                          ProjectStats* stats) noexcept;
 
 // riemann:N (sampling_riemann.cpp).
 Status project_riemann(const ImageView& image, std::uint32_t n, const ProjectOptions& options,

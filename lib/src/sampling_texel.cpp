@@ -1,8 +1,6 @@
 #include "sampling_texel.h"
 
-#include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <numbers>
 
 #include "shpack/sampling_methods.h"
@@ -32,47 +30,19 @@ EquirectTexel equirect_texel(const Dir3& d, std::uint32_t width, std::uint32_t h
 }
 
 namespace detail {
-namespace {
-
-float load_value(const std::byte* p, PixelType type) noexcept {
-  if (type == PixelType::F32) {
-    float f;
-    std::memcpy(&f, p, sizeof f);
-    return f;
-  }
-  std::uint16_t h;
-  std::memcpy(&h, p, sizeof h);
-  return half_to_float(h);
-}
-
-}  // namespace
 
 bool TexelReader::read(std::uint32_t x, std::uint32_t y, std::array<double, 3>& rgb) noexcept {
-  const std::byte* p = image_.pixel(x, y);
-  const std::int64_t step = pixel_type_size(image_.type);
-  const bool colour = image_.channels >= 3;
-  bool nonfinite = false, negative = false;
-  for (int c = 0; c < 3; ++c) {
-    float v = load_value(p + (colour ? c * step : 0), image_.type);
-    if (!std::isfinite(v)) {
-      nonfinite = true;
-      v = 0.0f;
-    } else if (v < 0.0f) {
-      negative = true;
-      if (options_.negative == Negative::Clamp) v = 0.0f;
-    }
-    counts_.max_value = std::max(counts_.max_value, static_cast<double>(v));
-    rgb[c] = v;
-  }
-  counts_.negative += negative ? 1 : 0;
-  if (nonfinite) {
-    if (counts_.nonfinite++ == 0) {
-      counts_.first_nonfinite_x = x;
-      counts_.first_nonfinite_y = y;
-    }
-    return options_.nonfinite != NonFinite::Error;
-  }
-  return true;
+  ImageView texel = image_;
+  texel.data = image_.pixel(x, y);
+  texel.width = 1;
+  texel.height = 1;
+  float planes[3];
+  TexelCounts one;
+  load_row_planes(texel, y, options_, planes, one);
+  one.first_nonfinite_x = x;  // the loader numbers texels within the row it is given
+  counts_.merge_after(one);
+  rgb = {planes[0], planes[1], planes[2]};
+  return one.nonfinite == 0 || options_.nonfinite != NonFinite::Error;
 }
 
 bool TexelReader::read(const Dir3& d, std::array<double, 3>& rgb) noexcept {

@@ -1,10 +1,11 @@
-// sampling_texel.h (private) - reading one texel of an equirect image with the value
+// sampling_texel.h (private) - reading single texels of an equirect image with the value
 // policies, for the methods of sampling_methods.h that read texels one at a time.
 //
-// The policies are those of row_kernel.cpp's row loader, texel by texel: a grey image
-// (1 or 2 channels) feeds channel 0 to R, G and B; a NaN or Inf channel is counted (once
-// per texel) and read as 0; a finite negative channel is counted (once per texel) and kept
-// or read as 0 (Negative::Clamp); max_value is the largest value after replacement.
+// There is one implementation of the policies, the row loader of row_kernel.h
+// (load_row_planes): a texel is read as a one-texel row of it, so a grey image feeds
+// channel 0 to R, G and B, a NaN or Inf channel is counted (once per texel) and read as 0,
+// a finite negative channel is counted and kept or read as 0 (Negative::Clamp), and
+// max_value is the largest value after replacement, exactly as in project_equirect.
 #pragma once
 
 #include <array>

@@ -32,8 +32,12 @@
 namespace shpack {
 
 enum class Method : std::uint8_t { Exact, Center };
-enum class NonFinite : std::uint8_t { Error, Zero };  // NaN/Inf texel: fail, or count as 0
-enum class Negative : std::uint8_t { Keep, Clamp };   // negative texel: keep, or count as 0
+// A texel with a NaN or Inf channel: fail with Errc::NonFiniteTexel, or replace each
+// non-finite channel value by 0 (its finite channels are kept). Counted either way.
+enum class NonFinite : std::uint8_t { Error, Zero };
+// A texel with a finite negative channel: keep it (it is radiance as the file says; lossy
+// compression makes small negatives), or replace each negative channel value by 0.
+enum class Negative : std::uint8_t { Keep, Clamp };
 
 struct ProjectOptions {
   Method method = Method::Exact;

@@ -16,8 +16,9 @@
 //             | -Y |               negative strides (image_view.h).
 //             +----+
 //
-// Faces: any resolved-able ImageView (image_view.h: F32 or F16, 1 to n channels, any byte
-// strides), all N x N with the same N >= 1. A 1 x 1 cube is six uniform faces.
+// Faces: any ImageView that resolve_view accepts (image_view.h: F32 or F16, 1 or more
+// channels, any byte strides), all N x N with the same N >= 1. A 1 x 1 cube is six
+// uniform faces.
 //
 // Methods (ProjectOptions::method):
 //  - Method::Exact (default): each of the 9 basis polynomials is integrated over each
@@ -33,16 +34,16 @@
 // ProjectStats, whose first_nonfinite_x/y are face-local (ProjectStats has no face field;
 // under NonFinite::Error the Status names the face).
 //
-// Numerics. A texel's weights are exact integrals accurate to a few 1e-13 of its solid
-// angle at N = 4096 (cube_moments.h; per-texel errors measured in
-// tests/unit/project_cube_test.cpp), the texel sums are double, and rows are combined with
-// Neumaier's compensated sum in fixed tiles of kTileRows face rows (the same rows of all
-// six faces) reduced in tile, then face order: the result is bit-identical for any thread
-// count.
+// Numerics. A texel's weights are its exact integrals up to about 10 u / h of its solid
+// angle (u = 2^-53, h = 2/N): 5e-16 at N = 1, 4e-13 at N = 1024, 1.6e-12 at N = 4096
+// (cube_moments.h; measured in tests/unit/project_cube_test.cpp). Texel sums are double;
+// rows are combined with Neumaier's compensated sum in fixed tiles of kTileRows face rows
+// (the same rows of all six faces, which share the texel weights), reduced in tile, then
+// face order: the result is bit-identical for any thread count.
 //
-// Memory. Allocates, once per call: per worker 27 N doubles (two rows of edge terms and
-// one row of texel weights) and 3 N floats (one face row as planes), and about 2.8 KiB per
-// tile of partial sums. Worker threads when ProjectOptions::threads != 1. On any error,
+// Memory. Allocates, once per call: per worker at most 27 N doubles (two rows of edge
+// terms and one row of texel weights) and 3 N floats (one face row as planes), and 2.7 KiB
+// per tile of partial sums. Worker threads when ProjectOptions::threads != 1. On any error,
 // `radiance` and `stats` are left as they were.
 #pragma once
 

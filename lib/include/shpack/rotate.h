@@ -1,9 +1,10 @@
 // rotate.h - rotations of L2 SH, and the yaw of Unity's Skybox/Panoramic `_Rotation`.
 //
-// What `--rotate DEG` means. Unity's Skybox/Panoramic (and Skybox/Cubemap) vertex shader
-// draws each vertex v of the skybox mesh at RotateAroundYInDegrees(v, _Rotation) and
-// samples the texture with the unrotated v (`o.texcoord = v.vertex.xyz`) [Unity built-in
-// shaders, DefaultResourcesExtra/Skybox-Panoramic.shader]. That function is
+// What `--rotate DEG` means. The vertex shaders of Unity's Skybox/Panoramic and
+// Skybox/Cubemap draw each vertex v of the skybox mesh at RotateAroundYInDegrees(v,
+// _Rotation) and sample the texture with the unrotated v (`o.texcoord = v.vertex.xyz`)
+// [Unity built-in shaders, DefaultResourcesExtra/Skybox-Panoramic.shader and
+// Skybox-Cubed.shader, read in the Lex-DRL/unity-builtin_shaders mirror]. That function is
 //
 //   alpha = degrees * pi / 180;  m = float2x2(cos, -sin, sin, cos);
 //   return float3(mul(m, v.xz), v.y).xzy;

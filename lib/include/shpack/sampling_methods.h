@@ -15,7 +15,7 @@
 //   mc:N           (4 pi / N) sum_k L(w_k) Y(w_k), w_k i.i.d. uniform       yes   -
 //   qmc:N          the same, w_k from a randomly digit-shifted Sobol net    yes   -
 //   fib:N          the same, w_k the N spherical Fibonacci points            -    -
-//   is:N           (1/N) sum_k L Y / p, p per texel ~ (lum + eps mean) Omega yes  W*H doubles
+//   is:N           (1/N) sum_k L Y / p, p per texel ~ (lum + eps mean) Omega yes  W H doubles
 //   riemann:N      N x 2N (theta, lon) grid, weight sin(theta) dtheta dlon   -    -
 //   cube:N         6 N^2 cube texels, weight (2/N)^2 / (1+a^2+b^2)^1.5,      -    -
 //                  renormalised to sum 4 pi (three.js LightProbeGenerator)
@@ -32,9 +32,11 @@
 //    proportion to their overlap (an exact box filter), so the small map covers the sphere
 //    like the source. The small map is held in float32 RGB, as a GPU render target would, and
 //    projected with Method::Exact. mip:0 equals exact bit for bit.
-//    Allocates 3 x W' x H' doubles (accumulators) and floats (the small map).
-//  - mc:N: directions y = 1 - 2 u1, lon = 2 pi u2 from std::mt19937_64(seed) (its output is
-//    fixed by the C++ standard, so the result is the same on every platform).
+//    Allocates 3 x W' x H' doubles (accumulators) and floats (the small map), and one
+//    source row (3 x W floats).
+//  - mc:N: directions y = 1 - 2 u1, lon = 2 pi u2 (uniform on the sphere, Archimedes), with
+//    u1, u2 from std::mt19937_64(seed), whose output the C++ standard fixes: the same
+//    samples on every platform (the last bits of the result still depend on the libm).
 //  - qmc:N: (u1, u2) = the 2-D Sobol sequence (van der Corput; Sobol's second dimension),
 //    XORed with two 32-bit digital shifts drawn from the seed. Sobol rather than Hammersley:
 //    every prefix of 2^m Sobol points is a (0, m, 2)-net, so any N is well stratified and the
@@ -45,15 +47,20 @@
 //  - fib:N: y_k = 1 - (2k + 1)/N, lon_k = 2 pi frac(k / phi), phi the golden ratio
 //    (Swinbank & Purser 2006; Keinert et al. 2015); deterministic.
 //  - is:N: a texel t is drawn with probability P_t ~ (max(lum_t, 0) + eps * mean) * Omega_t,
-//    lum = Rec. 709 luminance 0.2126 R + 0.7152 G + 0.0722 B, mean = sum lum Omega / 4 pi,
-//    eps = kImportanceFloor = 1/4; then a direction uniform in solid angle inside t. The
-//    estimate (1/N) sum L_t Y(w) Omega_t / P_t is unbiased for the exact projection. The floor
+//    lum = Rec. 709 luminance 0.2126 R + 0.7152 G + 0.0722 B, mean = sum_t max(lum_t, 0)
+//    Omega_t / (4 pi), eps = kImportanceFloor = 1/4; then a direction uniform in solid angle
+//    inside t. The estimate (1/N) sum L_t Y(w) Omega_t / P_t is unbiased for the exact
+//    projection (the CDF is built over texels in one pass, read with the policies). The floor
 //    makes it a defensive mixture (Hesterberg 1995): a fraction eps/(1+eps) = 20% of the
 //    probability is uniform in solid angle, so no texel is starved and the second moment is
 //    at most (1+eps)/eps = 5 times that of mc. An image with mean <= 0 is sampled uniformly.
-//    Allocates one double per texel (the CDF).
+//    Allocates one double per texel (the CDF: 8 W H bytes, 256 MiB for 8192 x 4096) and one
+//    row (3 x W floats).
 //  - riemann:N: cell centres of an N x 2N grid in (t, u) (conventions.h), weight
 //    sin(theta) (pi/N) (pi/N); the weights are not renormalised (sum 4 pi + O(N^-2)).
+//    Its error is O(N^-2) once N >= H (each texel then holds whole cells when H divides N).
+//    For N < H it reads one texel per cell, and when H/N is even every cell centre lies on a
+//    texel edge, where the lookup's rounding picks one side: a half-texel shift, O(1/H).
 //  - cube:N, cube-exact:N: the six N x N faces of conventions.h kCubeFaceAxes; each cube
 //    texel takes the equirect texel its centre direction falls in (nearest-texel
 //    resampling) and is weighted by cube_texel_weight_threejs (then all weights scaled by
@@ -116,8 +123,12 @@ constexpr bool uses_seed(SamplingMethod m) noexcept {
          m == SamplingMethod::Importance;
 }
 
+// Largest N of riemann:N and cube:N, so that their 2 N^2 and 6 N^2 samples fit in 64 bits.
+inline constexpr std::uint32_t kMaxGridParam = 1u << 30;
+
 // InvalidArgument unless the parameter is in its method's domain: param == 0 for exact and
-// center, 0 <= K <= 31 for mip, N >= 9 for lsq, N >= 1 for the others.
+// center, 0 <= K <= 31 for mip, N >= 9 for lsq, 1 <= N <= kMaxGridParam for riemann, cube
+// and cube-exact, N >= 1 for the others.
 Status validate_method(const MethodSpec& spec) noexcept;
 
 // Parses "exact", "center", "mip:K", "mc:N", "qmc:N", "fib:N", "is:N", "riemann:N",
@@ -129,7 +140,7 @@ Status parse_method(std::string_view text, MethodSpec& spec) noexcept;
 // The name parse_method reads back to the same spec: "mc:4096", or "mc:4096:7" when the seed
 // is not the default (the seed is printed only for methods that use it). No allocation.
 struct MethodName {
-  std::array<char, 48> text{};  // NUL-terminated; the longest name has 42 characters
+  std::array<char, 48> text{};  // NUL-terminated; the longest name has 35 characters
   std::string_view view() const noexcept { return text.data(); }
   const char* c_str() const noexcept { return text.data(); }
 };
@@ -186,7 +197,7 @@ class ShLeastSquares {
   std::uint64_t count() const noexcept { return count_; }
 
  private:
-  std::array<std::array<double, kShCount>, kShCount> r_{};           // upper triangle
+  std::array<std::array<double, kShCount>, kShCount> r_{};              // upper triangle
   std::array<std::array<double, kChannelCount>, kShCount> qt_value_{};  // Q^T v
   std::uint64_t count_ = 0;
 };

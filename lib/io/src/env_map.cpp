@@ -6,7 +6,6 @@
 #include <new>
 #include <span>
 #include <string>
-#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -45,6 +44,7 @@ IoStatus core_error(const fs::path& path, const Status& st) {
   return IoStatus::error(IoErrc::Core, path, st.what);
 }
 
+// Fills `out` completely or returns an error (project_env_map keeps `out` untouched then).
 IoStatus project_opened(const fs::path& path, OIIO::ImageInput& in, const EnvMapOptions& options,
                         EnvMapProjection& out) {
   const OIIO::ImageSpec& spec = in.spec();
@@ -118,7 +118,10 @@ IoStatus project_env_map(const fs::path& path, const EnvMapOptions& options, Env
       return IoStatus::error(IoErrc::Unreadable, path,
                              "not an image that can be read (" + OIIO::geterror() + ")");
     }
-    return project_opened(path, *in, options, out);
+    EnvMapProjection result;
+    if (IoStatus st = project_opened(path, *in, options, result); !st.ok()) return st;
+    out = std::move(result);
+    return IoStatus::success();
   } catch (const std::bad_alloc&) {
     return IoStatus::error(IoErrc::Unreadable, path, "out of memory while reading");
   } catch (const std::exception& e) {

@@ -11,4 +11,8 @@ namespace shpack::io::detail {
 // said plainly ("no such file", "is a directory") instead of a reader's "cannot open".
 IoStatus check_regular_file(const std::filesystem::path& path);
 
+// Success if `path` exists and is not a directory: also a pipe such as /dev/stdin, for
+// inputs that are read front to back (JSON).
+IoStatus check_not_directory(const std::filesystem::path& path);
+
 }  // namespace shpack::io::detail

@@ -3,6 +3,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <cstdint>
 #include <span>
 #include <string_view>
 

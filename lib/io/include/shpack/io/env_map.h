@@ -7,8 +7,10 @@
 // rows), whatever the image size.
 //
 // Pixels: half, float and 8/16/32-bit integer channels all arrive as float (integers as
-// value / max). Integer sRGB images are linearised with the exact EOTF (srgb.h); HDR
-// formats are never transformed (pixel_encoding.h has the rule). Channels: 1 is grey
+// value / max). Float pixels (EXR, .hdr, PFM) are never transformed. Integer pixels are
+// linearised with the exact sRGB EOTF (srgb.h) when OpenImageIO reports the colour space
+// "sRGB", or when a PNG or JPEG reports none; otherwise they too are taken as linear
+// (EnvMapInfo::srgb_decoded says which happened). Channels: 1 is grey
 // (the core replicates it to R, G, B), 2 is grey + alpha, 3 is RGB, 4 or more is RGB and
 // channels that are not read (counted in EnvMapInfo::ignored_channels). Alpha is never
 // applied to colour: it is read unassociated and then ignored.
@@ -54,6 +56,7 @@ struct EnvMapProjection {
 // unusable kind (Unsupported), of a shape whose layout cannot be detected (UnknownLayout),
 // or holds NaN/Inf texels under NonFinite::Error (NonFiniteTexel; the whole image is
 // scanned first, so the message gives their number and the first in row-major order).
+// On failure `out` is left as it was.
 IoStatus project_env_map(const std::filesystem::path& path, const EnvMapOptions& options,
                          EnvMapProjection& out);
 

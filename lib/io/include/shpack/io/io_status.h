@@ -17,7 +17,7 @@ enum class IoErrc : std::uint8_t {
   Ok = 0,
   InvalidArgument,  // an option is out of its domain
   NotFound,         // the path does not exist
-  NotAFile,         // the path is a directory or another non-regular file
+  NotAFile,         // the path is a directory (or, for an image, not a regular file)
   Unreadable,       // not an image or JSON file that can be read, or a read error (truncation)
   Unsupported,      // a readable image that shpack cannot use (zero size, deep data, ...)
   UnknownLayout,    // an image whose shape does not say its layout, and none was given

@@ -1,0 +1,12 @@
+// validators.h - CLI11 checks for numeric options. CLI11's own NonNegativeNumber lets
+// "nan" through (NaN fails no comparison); a NaN intensity would make every coefficient NaN.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace shpack::cli {
+
+CLI::Validator finite_number();
+CLI::Validator non_negative_finite_number();
+
+}  // namespace shpack::cli

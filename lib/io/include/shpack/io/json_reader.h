@@ -1,0 +1,24 @@
+// json_reader.h - the coefficients of an output document, read back (shpack eval).
+//
+// Only the keys a consumer of the numbers needs are read and checked: schema_version,
+// radiance_sh, sphericalHarmonicsL2 and shader. Errors name the file and the JSON pointer
+// of the offending value ("out.json: /shader/unity_SHAr/3: expected a number").
+#pragma once
+
+#include <filesystem>
+
+#include "shpack/io/io_status.h"
+#include "shpack/sh_basis.h"
+#include "shpack/unity_pack.h"
+
+namespace shpack::io {
+
+struct ShJsonContent {
+  ShL2 radiance;                        // radiance_sh
+  UnitySphericalHarmonicsL2 unity_sh;   // sphericalHarmonicsL2
+  UnityShaderVectors shader;            // shader
+};
+
+IoStatus read_sh_json(const std::filesystem::path& path, ShJsonContent& out);
+
+}  // namespace shpack::io

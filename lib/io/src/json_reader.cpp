@@ -1,0 +1,107 @@
+#include "shpack/io/json_reader.h"
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "file_checks.h"
+#include "json_keys.h"
+
+namespace shpack::io {
+namespace {
+
+using Json = nlohmann::json;
+
+// A value that is not what the format says; thrown inside this file only.
+struct BadValue {
+  std::string pointer, problem;
+};
+
+const Json& member(const Json& object, const std::string& pointer, const char* key) {
+  if (!object.is_object()) throw BadValue{pointer.empty() ? "/" : pointer, "expected an object"};
+  const auto it = object.find(key);
+  if (it == object.end()) throw BadValue{pointer.empty() ? "/" : pointer, std::string("missing key \"") + key + "\""};
+  return *it;
+}
+
+double number(const Json& value, const std::string& pointer) {
+  if (!value.is_number()) throw BadValue{pointer, "expected a number"};
+  const double v = value.get<double>();
+  if (!std::isfinite(v)) throw BadValue{pointer, "expected a finite number"};
+  return v;
+}
+
+float float32(const Json& value, const std::string& pointer) {
+  const auto v = static_cast<float>(number(value, pointer));
+  if (!std::isfinite(v)) throw BadValue{pointer, "out of float32 range"};
+  return v;
+}
+
+// An array of exactly N elements, each read by `read(element, pointer)`.
+template <std::size_t N, class Read>
+auto elements(const Json& value, const std::string& pointer, Read read) {
+  if (!value.is_array() || value.size() != N)
+    throw BadValue{pointer, "expected an array of " + std::to_string(N) + " elements"};
+  std::array<decltype(read(value[0], pointer)), N> out;
+  for (std::size_t i = 0; i < N; ++i) out[i] = read(value[i], pointer + "/" + std::to_string(i));
+  return out;
+}
+
+ShJsonContent content_of(const Json& doc) {
+  const Json& version = member(doc, "", "schema_version");
+  if (!version.is_number_integer() || version.get<std::int64_t>() != detail::kSchemaVersion) {
+    throw BadValue{"/schema_version", "unsupported schema version " + version.dump() +
+                                          " (this shpack reads " +
+                                          std::to_string(detail::kSchemaVersion) + ")"};
+  }
+  ShJsonContent out;
+  const auto doubles = [](const Json& v, const std::string& p) {
+    return elements<kShCount>(v, p, number);
+  };
+  const auto floats = [](const Json& v, const std::string& p) {
+    return elements<kShCount>(v, p, float32);
+  };
+  out.radiance.c = elements<kChannelCount>(member(doc, "", "radiance_sh"), "/radiance_sh", doubles);
+  out.unity_sh = elements<kChannelCount>(member(doc, "", "sphericalHarmonicsL2"),
+                                         "/sphericalHarmonicsL2", floats);
+  const Json& shader = member(doc, "", "shader");
+  for (const auto& [key, vector] : detail::kShaderVectorKeys) {
+    const std::string pointer = std::string("/shader/") + key;
+    out.shader.*vector = elements<4>(member(shader, "/shader", key), pointer, float32);
+  }
+  return out;
+}
+
+// nlohmann's messages start with "[json.exception.parse_error.101] "; the rest is the news.
+std::string parse_problem(const Json::parse_error& e) {
+  const std::string what = e.what();
+  const std::size_t end = what.find("] ");
+  return end == std::string::npos ? what : what.substr(end + 2);
+}
+
+}  // namespace
+
+IoStatus read_sh_json(const std::filesystem::path& path, ShJsonContent& out) {
+  if (IoStatus st = detail::check_not_directory(path); !st.ok()) return st;
+  try {
+    std::ifstream file(path, std::ios::binary);
+    std::ostringstream text;
+    text << file.rdbuf();
+    if (!file) return IoStatus::error(IoErrc::Unreadable, path, "cannot read the file");
+    out = content_of(Json::parse(text.str()));
+    return IoStatus::success();
+  } catch (const Json::parse_error& e) {
+    return IoStatus::error(IoErrc::Unreadable, path, "not valid JSON: " + parse_problem(e));
+  } catch (const BadValue& bad) {
+    return IoStatus::error(IoErrc::BadDocument, path, bad.pointer + ": " + bad.problem);
+  } catch (const std::exception& e) {
+    return IoStatus::error(IoErrc::Unreadable, path, e.what());
+  }
+}
+
+}  // namespace shpack::io

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages that shpack needs to build, test and benchmark.
+# Packages already installed are not touched, so a second run costs a few dpkg-query calls.
+# Needs root (or sudo) only when something is missing.
+set -euo pipefail
+
+packages=(
+  cmake g++ make                 # the toolchain
+  libopenimageio-dev             # image reading (lib/io)
+  openimageio-tools              # iinfo, oiiotool: look at and make test images
+  libopenexr-dev                 # OpenEXR, which OpenImageIO reads .exr with
+  nlohmann-json3-dev             # JSON (lib/io)
+  libcli11-dev                   # the command line (cli/)
+  libgtest-dev                   # tests/
+  libbenchmark-dev               # bench/
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q '^install ok installed$'; then
+    missing+=("$package")
+  fi
+done
+if ((${#missing[@]} == 0)); then
+  exit 0
+fi
+
+as_root=()
+if ((EUID != 0)); then
+  if ! command -v sudo >/dev/null; then
+    echo "install-deps: missing ${missing[*]}; run as root to install them" >&2
+    exit 1
+  fi
+  as_root=(sudo)
+fi
+echo "install-deps: installing ${missing[*]}" >&2
+"${as_root[@]}" apt-get update
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive \
+  apt-get install -y --no-install-recommends "${missing[@]}"

@@ -1,0 +1,68 @@
+#include "io_test_files.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <iterator>
+
+namespace shpack_io_test {
+
+ScratchDir::ScratchDir() {
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string name = test != nullptr
+                               ? std::string(test->test_suite_name()) + "." + test->name()
+                               : std::string("no_test");
+  path_ = std::filesystem::path(::testing::TempDir()) /
+          ("shpack_io_" + name + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(path_);
+  std::filesystem::create_directories(path_);
+}
+
+ScratchDir::~ScratchDir() {
+  std::error_code ignored;  // a destructor cannot fail the test; a leftover folder is harmless
+  std::filesystem::remove_all(path_, ignored);
+}
+
+bool write_image(const std::filesystem::path& path, int width, int height, int channels,
+                 const std::vector<float>& pixels, OIIO::TypeDesc file_type,
+                 const std::vector<OIIO::ParamValue>& attributes) {
+  EXPECT_EQ(pixels.size(), static_cast<std::size_t>(width) * height * channels) << path;
+  const std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path.string());
+  if (!out) {
+    ADD_FAILURE() << "cannot create a writer for " << path << ": " << OIIO::geterror();
+    return false;
+  }
+  OIIO::ImageSpec spec(width, height, channels, file_type);
+  for (const OIIO::ParamValue& p : attributes) spec.attribute(p.name(), p.type(), p.data());
+  if (!out->open(path.string(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) ||
+      !out->close()) {
+    ADD_FAILURE() << "cannot write " << path << ": " << out->geterror();
+    return false;
+  }
+  return true;
+}
+
+bool write_constant_image(const std::filesystem::path& path, int width, int height,
+                          const std::vector<float>& texel, OIIO::TypeDesc file_type,
+                          const std::vector<OIIO::ParamValue>& attributes) {
+  std::vector<float> pixels;
+  for (int i = 0; i < width * height; ++i) pixels.insert(pixels.end(), texel.begin(), texel.end());
+  return write_image(path, width, height, static_cast<int>(texel.size()), pixels, file_type, attributes);
+}
+
+std::vector<char> read_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_bytes(const std::filesystem::path& path, const std::vector<char>& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+std::filesystem::path hdri(const std::string& name) {
+  return std::filesystem::path(SHPACK_SOURCE_DIR) / "data" / "hdri" / name;
+}
+
+}  // namespace shpack_io_test
