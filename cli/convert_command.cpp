@@ -111,6 +111,16 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
       ->check(non_negative_finite_number());
   cmd->add_option("--exposure", options.exposure, "Multiply the radiance by 2^EV (default 0)")
       ->check(finite_number());
+  cmd->add_option("--rotate", options.rotate_deg,
+                  "Yaw about +Y in degrees, as Skybox/Panoramic's _Rotation (default 0)")
+      ->check(finite_number());
+  cmd->add_option("--window", options.window,
+                  "Deringing: none, hanning:W, lanczos:W, unity or sloan (default none)")
+      ->check([](const std::string& text) {
+        Window window;
+        const Status st = parse_window(text, window);
+        return st.ok() ? std::string() : std::string(st.what);
+      });
   cmd->add_option("--threads", options.threads, "Worker threads (default 0: all cores)");
   return cmd;
 }
@@ -139,6 +149,8 @@ int run_convert(const ConvertOptions& options) {
   settings.env_map.layout = options.layout;
   settings.env_map.project = {options.method, options.nonfinite, options.negative, options.threads};
   settings.intensity = factor;
+  settings.rotate_deg = options.rotate_deg;
+  if (!parse_window(options.window, settings.window).ok()) return kExitUsage;  // checked by CLI11
   bool all_ok = true;
   for (const auto& [input, output] : plan.jobs) all_ok = convert_one(input, output, settings) && all_ok;
   return all_ok ? kExitOk : kExitFailure;

@@ -25,6 +25,8 @@ struct ConvertOptions {
   Negative negative = Negative::Keep;
   double intensity = 1.0;  // linear factor
   double exposure = 0.0;   // EV: a further factor 2^exposure
+  double rotate_deg = 0.0; // yaw about +Y, degrees (Skybox/Panoramic _Rotation)
+  std::string window = "none";  // --window, parsed by shpack::parse_window
   unsigned threads = 0;    // 0: all hardware threads
 };
 

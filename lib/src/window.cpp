@@ -1,6 +1,8 @@
 #include "shpack/window.h"
 
+#include <charconv>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 #include "shpack/sh_minimum.h"
@@ -46,6 +48,53 @@ std::array<double, 3> sloan_channel(const ShL2& sh, int channel, bool& impossibl
 }
 
 }  // namespace
+
+Status parse_window(std::string_view text, Window& window) noexcept {
+  struct Named {
+    std::string_view name;
+    WindowKind kind;
+    bool has_width;
+  };
+  constexpr Named kNames[] = {{"none", WindowKind::None, false},       {"unity", WindowKind::Unity, false},
+                              {"sloan", WindowKind::Sloan, false},     {"hanning", WindowKind::Hanning, true},
+                              {"lanczos", WindowKind::Lanczos, true}};
+  const std::size_t colon = text.find(':');
+  const std::string_view name = text.substr(0, colon);
+  for (const Named& n : kNames) {
+    if (n.name != name) continue;
+    if (!n.has_width) {
+      if (colon != std::string_view::npos) return Status::error(Errc::InvalidArgument, "this window takes no width");
+      window = {n.kind, 0.0};
+      return Status::success();
+    }
+    if (colon == std::string_view::npos)
+      return Status::error(Errc::InvalidArgument, "hanning and lanczos need a width, e.g. hanning:3");
+    const std::string_view number = text.substr(colon + 1);
+    double width = 0.0;
+    const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), width);
+    if (ec != std::errc() || end != number.data() + number.size() || !(width > 0.0) || !std::isfinite(width))
+      return Status::error(Errc::InvalidArgument, "the window width must be a finite number > 0");
+    window = {n.kind, width};
+    return Status::success();
+  }
+  return Status::error(Errc::InvalidArgument, "unknown window (none, hanning:W, lanczos:W, unity, sloan)");
+}
+
+WindowName window_name(const Window& window) noexcept {
+  WindowName out{};
+  const char* name = window.kind == WindowKind::Unity     ? "unity"
+                     : window.kind == WindowKind::Sloan   ? "sloan"
+                     : window.kind == WindowKind::Hanning ? "hanning"
+                     : window.kind == WindowKind::Lanczos ? "lanczos"
+                                                          : "none";
+  char* end = std::strncpy(out.text, name, sizeof out.text - 1) + std::strlen(name);
+  if (window.kind == WindowKind::Hanning || window.kind == WindowKind::Lanczos) {
+    *end++ = ':';
+    end = std::to_chars(end, out.text + sizeof out.text - 1, window.width).ptr;  // shortest round trip
+  }
+  *end = '\0';
+  return out;
+}
 
 Status window_factors(const Window& window, std::array<double, 3>& f) noexcept {
   switch (window.kind) {

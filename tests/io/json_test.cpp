@@ -55,7 +55,8 @@ TEST(JsonWriter, KeysAreThoseOfTheDesignInOrder) {
                                                          "unity_SHBg", "unity_SHBb", "unity_SHC"}));
   EXPECT_EQ(keys(j["diagnostics"]),
             (std::vector<std::string>{"nonfinite_texels", "negative_texels", "ignored_channels",
-                                      "min_e_over_pi", "min_e_over_pi_direction"}));
+                                      "min_e_over_pi", "min_e_over_pi_direction", "window_factors",
+                                      "window_impossible"}));
 }
 
 TEST(JsonWriter, ValuesAreThoseOfTheDocument) {

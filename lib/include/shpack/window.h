@@ -22,6 +22,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string_view>
 
 #include "shpack/sh_basis.h"
 #include "shpack/status.h"
@@ -34,6 +35,15 @@ struct Window {
   WindowKind kind = WindowKind::None;
   double width = 0;  // W, in bands, for Hanning and Lanczos (> 0)
 };
+
+// Parses "none", "hanning:W", "lanczos:W", "unity" or "sloan" (the CLI's --window).
+Status parse_window(std::string_view text, Window& window) noexcept;
+
+// The same text back, e.g. "hanning:2.5" (shortest form that parses to the same width).
+struct WindowName {
+  char text[40];
+};
+WindowName window_name(const Window& window) noexcept;
 
 // The factors (w_0, w_1, w_2) of a fixed window (not Sloan, which depends on the data).
 Status window_factors(const Window& window, std::array<double, 3>& factors) noexcept;

@@ -6,6 +6,7 @@
 
 #include "shpack/convolution.h"
 #include "shpack/io/sha256.h"
+#include "shpack/rotate.h"
 #include "shpack/sh_minimum.h"
 #include "shpack/unity_pack.h"
 
@@ -25,6 +26,8 @@ IoStatus convert_env_map(const std::filesystem::path& path, const ConvertSetting
                          ShDocument& out) {
   if (!std::isfinite(settings.intensity) || settings.intensity < 0)
     return IoStatus::error(IoErrc::InvalidArgument, path, "intensity must be finite and >= 0");
+  if (!std::isfinite(settings.rotate_deg))
+    return IoStatus::error(IoErrc::InvalidArgument, path, "rotation must be a finite number of degrees");
   EnvMapProjection projection;
   if (IoStatus st = project_env_map(path, settings.env_map, projection); !st.ok()) return st;
   std::string digest;
@@ -35,14 +38,20 @@ IoStatus convert_env_map(const std::filesystem::path& path, const ConvertSetting
                 projection.info.width, projection.info.height};
   doc.method = settings.env_map.project.method;
   doc.intensity = settings.intensity;
-  doc.radiance = scaled(projection.radiance, settings.intensity);
-  doc.unity_form = radiance_to_unity_form(doc.radiance);
+  doc.rotate_deg = settings.rotate_deg;
+  doc.window = settings.window;
+  const ShL2 radiance = rotate_about_y(scaled(projection.radiance, settings.intensity), settings.rotate_deg);
+  WindowResult windowed;
+  if (Status st = apply_window(radiance_to_unity_form(radiance), settings.window, doc.unity_form, &windowed);
+      !st.ok())
+    return IoStatus::error(IoErrc::InvalidArgument, path, st.what);
+  doc.radiance = apply_band_factors(radiance, windowed.factors);
   if (!fits_in_float(doc.unity_form)) {
     return IoStatus::error(IoErrc::Unsupported, path,
                            "the lighting is too bright for Unity's float32 coefficients");
   }
   doc.diagnostics = {projection.stats.nonfinite_texels, projection.stats.negative_texels,
-                     projection.info.ignored_channels, {}};
+                     projection.info.ignored_channels, {}, windowed.factors, windowed.impossible};
   for (int c = 0; c < kChannelCount; ++c)
     doc.diagnostics.min_e_over_pi[c] = minimum_on_sphere(doc.unity_form, c);
   out = std::move(doc);

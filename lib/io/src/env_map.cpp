@@ -9,27 +9,13 @@
 #include <thread>
 #include <vector>
 
-#include "file_checks.h"
+#include "image_open.h"
 #include "pixel_encoding.h"
 
 namespace shpack::io {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The problem with an image spec that shpack cannot project, or "" if there is none.
-std::string spec_problem(const OIIO::ImageSpec& spec) {
-  if (spec.width <= 0 || spec.height <= 0) return "the image has zero size";
-  if (spec.nchannels <= 0) return "the image has no channels";
-  if (spec.deep) return "the image holds deep data, not an environment map";
-  if (spec.depth > 1) return "the image is a volume, not an environment map";
-  // Texels outside a smaller data window would be lost from the sphere without a word.
-  if (spec.x != spec.full_x || spec.y != spec.full_y || spec.width != spec.full_width ||
-      spec.height != spec.full_height) {
-    return "the data window differs from the display window, which is not supported";
-  }
-  return {};
-}
 
 // Rows per band: whole tiles, one per worker, within kBandBudgetBytes (at least one tile).
 std::uint32_t band_rows(std::uint32_t width, std::uint32_t channels, unsigned threads) {
@@ -48,7 +34,7 @@ IoStatus core_error(const fs::path& path, const Status& st) {
 IoStatus project_opened(const fs::path& path, OIIO::ImageInput& in, const EnvMapOptions& options,
                         EnvMapProjection& out) {
   const OIIO::ImageSpec& spec = in.spec();
-  if (const std::string problem = spec_problem(spec); !problem.empty())
+  if (const std::string problem = detail::spec_problem(spec); !problem.empty())
     return IoStatus::error(IoErrc::Unsupported, path, problem);
 
   EnvMapInfo& info = out.info;
@@ -109,15 +95,8 @@ IoStatus project_opened(const fs::path& path, OIIO::ImageInput& in, const EnvMap
 
 IoStatus project_env_map(const fs::path& path, const EnvMapOptions& options, EnvMapProjection& out) {
   try {
-    if (IoStatus st = detail::check_regular_file(path); !st.ok()) return st;
-    // Colour is wanted as stored: PNG/TIFF readers would otherwise premultiply it by alpha.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    const std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path.string(), &config);
-    if (!in) {
-      return IoStatus::error(IoErrc::Unreadable, path,
-                             "not an image that can be read (" + OIIO::geterror() + ")");
-    }
+    std::unique_ptr<OIIO::ImageInput> in;
+    if (IoStatus st = detail::open_image(path, in); !st.ok()) return st;
     EnvMapProjection result;
     if (IoStatus st = project_opened(path, *in, options, result); !st.ok()) return st;
     out = std::move(result);

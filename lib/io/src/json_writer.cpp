@@ -40,10 +40,9 @@ std::string to_json(const ShDocument& doc) {
                  {"layout", layout_name(doc.source.layout)},
                  {"width", doc.source.width},
                  {"height", doc.source.height}};
-  // Windowing and rotation are not offered yet: the output says that none was applied.
   j["options"] = {{"method", method_name(doc.method)},
-                  {"window", "none"},
-                  {"rotate_deg", 0},
+                  {"window", window_name(doc.window).text},
+                  {"rotate_deg", doc.rotate_deg},
                   {"intensity", doc.intensity}};
   j["frame"] = "unity: left-handed, +Y up, +Z forward";
   j["radiance_sh"] = sh_json(doc.radiance);
@@ -67,7 +66,9 @@ std::string to_json(const ShDocument& doc) {
                       {"negative_texels", diag.negative_texels},
                       {"ignored_channels", diag.ignored_channels},
                       {"min_e_over_pi", std::move(min_values)},
-                      {"min_e_over_pi_direction", std::move(min_directions)}};
+                      {"min_e_over_pi_direction", std::move(min_directions)},
+                      {"window_factors", diag.window_factors},
+                      {"window_impossible", diag.window_impossible}};
   // A file name need not be UTF-8 on Linux: replace bad bytes rather than fail.
   return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }

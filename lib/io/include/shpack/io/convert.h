@@ -1,8 +1,9 @@
 // convert.h - one environment map file to the content of its output document.
 //
-// Reads and projects the file (env_map.h), hashes it (sha256.h), applies the intensity,
-// convolves to Unity form (convolution.h) and finds the lowest E/pi per channel
-// (sh_minimum.h). Writing the document is the caller's choice (json_writer.h).
+// Reads and projects the file (env_map.h), hashes it (sha256.h), applies the intensity and
+// the rotation (rotate.h), convolves to Unity form (convolution.h), windows it (window.h;
+// the same band factors go to the radiance, so radiance_sh and the Unity outputs describe
+// one function) and finds the lowest E/pi per channel (sh_minimum.h). Writing the document is the caller's choice (json_writer.h).
 #pragma once
 
 #include <filesystem>
@@ -10,15 +11,18 @@
 #include "shpack/io/env_map.h"
 #include "shpack/io/io_status.h"
 #include "shpack/io/sh_document.h"
+#include "shpack/window.h"
 
 namespace shpack::io {
 
 struct ConvertSettings {
   EnvMapOptions env_map;
   double intensity = 1.0;  // linear factor on the radiance; finite and >= 0
+  double rotate_deg = 0.0; // yaw about +Y, as Skybox/Panoramic's _Rotation (rotate.h)
+  Window window;           // deringing (window.h)
 };
 
-// Fails as project_env_map does, with InvalidArgument for a bad intensity, and with
+// Fails as project_env_map does, with InvalidArgument for a bad intensity or rotation, and with
 // Unsupported when the result does not fit in float32 (Unity's storage).
 IoStatus convert_env_map(const std::filesystem::path& path, const ConvertSettings& settings,
                          ShDocument& out);

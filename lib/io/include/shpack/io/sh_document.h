@@ -14,6 +14,7 @@
 #include "shpack/project.h"
 #include "shpack/sh_basis.h"
 #include "shpack/sh_minimum.h"
+#include "shpack/window.h"
 
 namespace shpack::io {
 
@@ -31,13 +32,19 @@ struct ShDiagnostics {
   // Per channel, the exact minimum over the sphere of E/pi of unity_form (sh_minimum.h):
   // negative where L2 ringing would make Unity's shader return negative light.
   std::array<SphereMinimum, kChannelCount> min_e_over_pi{};
+  // Per channel, the factors (w_0, w_1, w_2) the window applied to each band (window.h),
+  // and whether the sloan window could not make that channel non-negative (L00 < 0).
+  std::array<std::array<double, 3>, kChannelCount> window_factors{{{1, 1, 1}, {1, 1, 1}, {1, 1, 1}}};
+  std::array<bool, kChannelCount> window_impossible{};
 };
 
 struct ShDocument {
   ShSource source;
   Method method = Method::Exact;
   double intensity = 1.0;  // linear factor applied to the radiance (intensity * 2^exposure)
-  ShL2 radiance;           // L_c,i in Unity's frame, intensity applied
+  double rotate_deg = 0.0; // yaw applied (rotate.h)
+  Window window;           // deringing applied (window.h)
+  ShL2 radiance;           // L_c,i in Unity's frame, intensity, rotation and window applied
   ShL2 unity_form;         // (A_l / pi) k_i L_c,i (convolution.h)
   ShDiagnostics diagnostics;
 };

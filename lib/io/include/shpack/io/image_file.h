@@ -1,0 +1,35 @@
+// image_file.h - a whole image file read into memory as float, for the projections that
+// need every texel at once (sampling methods, cube layouts, the bench). The streaming
+// equirect path (env_map.h) never holds the whole image.
+//
+// Pixels are decoded exactly as env_map.h describes (float as stored, integer sRGB
+// linearised, grey kept as one channel, alpha and extra channels dropped and counted).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "shpack/image_view.h"
+#include "shpack/io/io_status.h"
+
+namespace shpack::io {
+
+struct ImageFile {
+  std::uint32_t width = 0, height = 0;
+  std::uint32_t channels = 0;          // channels kept in `pixels`: 1 (grey) or 3 (RGB)
+  std::uint32_t file_channels = 0;     // channels in the file
+  bool srgb_decoded = false;           // integer sRGB pixels were linearised
+  std::string format;                  // OpenImageIO's format name
+  std::vector<float> pixels;           // row-major, top row first, `channels` per texel
+
+  std::uint32_t ignored_channels() const noexcept { return file_channels - channels; }
+  // A view of `pixels` (valid while this object lives and `pixels` is not resized).
+  ImageView view() const noexcept { return make_view(pixels.data(), width, height, channels); }
+};
+
+// Reads all of `path`. Errors name the file, as project_env_map's do.
+IoStatus read_image_file(const std::filesystem::path& path, ImageFile& out);
+
+}  // namespace shpack::io
