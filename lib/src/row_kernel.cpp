@@ -99,6 +99,17 @@ void load_row_planes(const ImageView& row, std::uint32_t y, const ProjectOptions
   }
 }
 
+Status load_image_row(const ImageView& image, std::uint32_t y, const ProjectOptions& options,
+                      std::span<float> planes, TexelCounts& counts) noexcept {
+  TexelCounts row_counts;
+  load_row_planes(image.rows(y, 1), y, options, planes, row_counts);
+  counts.merge_after(row_counts);
+  if (row_counts.nonfinite != 0 && options.nonfinite == NonFinite::Error)
+    return Status::error(Errc::NonFiniteTexel, "NaN or Inf texel", counts.first_nonfinite_x,
+                         counts.first_nonfinite_y);
+  return Status::success();
+}
+
 void row_column_sums(const ImageView& row, std::uint32_t y, const ProjectOptions& options,
                      const ColumnTables& columns, std::span<float> scratch,
                      TexelCounts& counts, ColumnSums (&sums)[3]) noexcept {

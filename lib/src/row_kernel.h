@@ -37,6 +37,12 @@ struct ColumnSums {
 void load_row_planes(const ImageView& row, std::uint32_t y, const ProjectOptions& options,
                      std::span<float> scratch, TexelCounts& counts) noexcept;
 
+// Row `y` of a resolved whole-image view through load_row_planes, its counts merged into
+// `counts`; fails with Errc::NonFiniteTexel (at the first such texel so far) when the row
+// holds one and the options say NonFinite::Error. For projections that read row by row.
+Status load_image_row(const ImageView& image, std::uint32_t y, const ProjectOptions& options,
+                      std::span<float> planes, TexelCounts& counts) noexcept;
+
 // As load_row_planes (or a fused kernel with the same result), then the column sums of
 // each channel.
 void row_column_sums(const ImageView& row, std::uint32_t y, const ProjectOptions& options,

@@ -64,12 +64,7 @@ Status project_importance(const ImageView& image, std::uint32_t n, std::uint64_t
   TexelCounts counts;
   NeumaierSum luminance_integral;
   for (std::uint32_t y = 0; y < height; ++y) {
-    TexelCounts row_counts;
-    load_row_planes(image.rows(y, 1), y, options, planes, row_counts);
-    counts.merge_after(row_counts);
-    if (row_counts.nonfinite != 0 && options.nonfinite == NonFinite::Error)
-      return Status::error(Errc::NonFiniteTexel, "NaN or Inf texel", counts.first_nonfinite_x,
-                           counts.first_nonfinite_y);
+    if (Status st = load_image_row(image, y, options, planes, counts); !st.ok()) return st;
     const double omega = row_solid_angle(y, height, width);
     for (std::uint32_t x = 0; x < width; ++x) {
       const std::array<double, 3> rgb = {planes[x], planes[width + x],

@@ -59,12 +59,7 @@ Status project_mip(const ImageView& image, std::uint32_t levels, const ProjectOp
   // project_equirect; every texel is added to the (at most four) small texels it overlaps.
   TexelCounts counts;
   for (std::uint32_t y = 0; y < height; ++y) {
-    TexelCounts row_counts;
-    load_row_planes(image.rows(y, 1), y, options, planes, row_counts);
-    counts.merge_after(row_counts);
-    if (row_counts.nonfinite != 0 && options.nonfinite == NonFinite::Error)
-      return Status::error(Errc::NonFiniteTexel, "NaN or Inf texel", counts.first_nonfinite_x,
-                           counts.first_nonfinite_y);
+    if (Status st = load_image_row(image, y, options, planes, counts); !st.ok()) return st;
     const Overlap oy = overlap(y, height, small_h);
     const std::uint64_t row_parts[2] = {oy.first_part, oy.rest};
     for (std::uint32_t x = 0; x < width; ++x) {
