@@ -10,6 +10,7 @@ packages=(
   openimageio-tools              # iinfo, oiiotool: look at and make test images
   libopenexr-dev                 # OpenEXR, which OpenImageIO reads .exr with
   nlohmann-json3-dev             # JSON (lib/io)
+  libssl-dev                     # SHA-256 of inputs (lib/io), with the CPU's SHA extensions
   libcli11-dev                   # the command line (cli/)
   libgtest-dev                   # tests/
   libbenchmark-dev               # bench/
