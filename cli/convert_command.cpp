@@ -1,16 +1,25 @@
 #include "convert_command.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <string>
+#include <string_view>
 #include <system_error>
+#include <thread>
+#include <vector>
 
+#include "batch.h"
 #include "enum_option.h"
 #include "report.h"
 #include "shpack/io/atomic_write.h"
 #include "shpack/io/convert.h"
 #include "shpack/io/json_writer.h"
+#include "shpack/io/output_format.h"
+#include "shpack/io/sun.h"
 #include "validators.h"
 
 namespace shpack::cli {
@@ -18,33 +27,43 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// --faces PATTERN: {face} becomes each of these, in Unity's face order +X -X +Y -Y +Z -Z.
+constexpr std::string_view kFacePlaceholder = "{face}";
+constexpr std::array<std::string_view, 6> kFaceNames = {"px", "nx", "py", "ny", "pz", "nz"};
+
 // The io messages state the facts; the remedy is a command-line matter, so it is added here.
-std::string with_remedy(const io::IoStatus& st) {
+// Naming the layout is no remedy when one is named already (a shape that does not fit it):
+// the message then lists the layouts that would fit, which is the remedy.
+std::string with_remedy(const io::IoStatus& st, const ConvertOptions& options) {
   switch (st.code) {
     case io::IoErrc::NonFiniteTexel: return st.message + "; use --nonfinite=zero to replace them";
-    case io::IoErrc::UnknownLayout: return st.message + "; pass --layout equirect if it is one";
+    case io::IoErrc::UnknownLayout:
+      return options.layout == io::Layout::Auto ? st.message + "; name the layout with --layout" : st.message;
     default: return st.message;
   }
 }
 
-// Converts one input; writes `output`, or stdout when it is empty. Reports its own error.
-bool convert_one(const fs::path& input, const fs::path& output, const io::ConvertSettings& settings) {
+// Converts one input (or the six `faces`, when there are any); writes `output`, or stdout
+// when it is empty. Returns the error line to report, or "" on success; runs on any thread.
+std::string convert_one(const fs::path& input, const std::vector<std::string>& face_files, const fs::path& output,
+                        const io::ConvertSettings& settings, const ConvertOptions& options) {
   io::ShDocument doc;
-  if (io::IoStatus st = io::convert_env_map(input, settings, doc); !st.ok()) {
-    report_error(with_remedy(st));
-    return false;
+  std::array<fs::path, kFaceNames.size()> faces;
+  std::copy(face_files.begin(), face_files.end(), faces.begin());
+  if (io::IoStatus st = !face_files.empty()    ? io::convert_cube_faces(faces, settings, doc)
+                        : options.extract_sun  ? io::convert_env_map_extracting_sun(input, settings, doc)
+                                               : io::convert_env_map(input, settings, doc);
+      !st.ok()) {
+    return with_remedy(st, options);
   }
-  const std::string json = io::to_json(doc);
+  if (options.l1) io::truncate_to_l1(doc);
+  const std::string json = io::format_document(doc, options.format);
   if (output.empty()) {
     std::cout << json << std::flush;
-    if (!std::cout) report_error("stdout: cannot write the JSON");
-    return static_cast<bool>(std::cout);
+    return std::cout ? std::string() : std::string("stdout: cannot write the JSON");
   }
-  if (io::IoStatus st = io::write_file_atomically(output, json); !st.ok()) {
-    report_error(st.message);
-    return false;
-  }
-  return true;
+  if (io::IoStatus st = io::write_file_atomically(output, json); !st.ok()) return st.message;
+  return {};
 }
 
 bool same_file(const fs::path& a, const fs::path& b) {
@@ -55,11 +74,60 @@ bool same_file(const fs::path& a, const fs::path& b) {
 // Input -> output pairs, or a usage problem. One output per input, never an input.
 struct Plan {
   std::vector<std::pair<fs::path, fs::path>> jobs;
+  std::vector<std::string> faces;  // the six --faces files, patterns expanded; empty without --faces
   std::string problem;
 };
 
+// `pattern` with every {face} replaced by `name`.
+std::string expand_face_pattern(std::string pattern, std::string_view name) {
+  for (std::size_t at = pattern.find(kFacePlaceholder); at != std::string::npos;
+       at = pattern.find(kFacePlaceholder, at + name.size())) {
+    pattern.replace(at, kFacePlaceholder.size(), name);
+  }
+  return pattern;
+}
+
+// The six face files of --faces: the six values as given, or one pattern expanded in Unity's
+// face order. Returns the usage problem, or "".
+std::string resolve_faces(const std::vector<std::string>& values, std::vector<std::string>& faces) {
+  if (values.size() == kFaceNames.size()) {
+    faces = values;
+    return {};
+  }
+  if (values.size() != 1 || values[0].find(kFacePlaceholder) == std::string::npos) {
+    return "convert: --faces takes six files, or one pattern containing {face}";
+  }
+  faces.clear();
+  for (std::string_view name : kFaceNames) faces.push_back(expand_face_pattern(values[0], name));
+  return {};
+}
+
 Plan plan_outputs(const ConvertOptions& options) {
   Plan plan;
+  if (!options.faces.empty()) {  // one document from six files
+    plan.problem = resolve_faces(options.faces, plan.faces);
+    if (!plan.problem.empty()) return plan;
+    if (options.extract_sun) {
+      plan.problem = "convert: --extract-sun reads equirect maps, not --faces";
+      return plan;
+    }
+    if (!options.inputs.empty() || !options.out_dir.empty()) {
+      plan.problem = "convert: --faces makes one document from six files: no other inputs, no --out-dir";
+      return plan;
+    }
+    for (const std::string& face : plan.faces) {
+      if (!options.output.empty() && same_file(face, options.output)) {
+        plan.problem = "convert: " + face + " is both a face and the output";
+        return plan;
+      }
+    }
+    plan.jobs.emplace_back(plan.faces[0], options.output);
+    return plan;
+  }
+  if (options.inputs.empty()) {
+    plan.problem = "convert: give the environment map files, or --faces with six files";
+    return plan;
+  }
   if (options.out_dir.empty() && options.inputs.size() > 1) {
     plan.problem = "convert: several inputs need --out-dir DIR";
     return plan;
@@ -68,7 +136,8 @@ Plan plan_outputs(const ConvertOptions& options) {
   for (const std::string& input : options.inputs) {
     const fs::path output = options.out_dir.empty()
                                 ? fs::path(options.output)
-                                : fs::path(options.out_dir) / fs::path(input).stem().concat(".json");
+                                : fs::path(options.out_dir) /
+                                      fs::path(input).stem().concat(io::format_extension(options.format));
     if (!output.empty()) {
       if (const auto [it, fresh] = input_of_output.emplace(output, input); !fresh) {
         plan.problem = "convert: " + it->second.string() + " and " + input + " would both write " +
@@ -89,18 +158,48 @@ Plan plan_outputs(const ConvertOptions& options) {
 
 CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
   CLI::App* cmd = app.add_subcommand("convert", "Environment maps to Unity L2 SH (JSON)");
-  cmd->add_option("inputs", options.inputs, "Environment map files (EXR, HDR, PFM, PNG, ...)")
-      ->required();
+  CLI::Option* inputs =
+      cmd->add_option("inputs", options.inputs, "Environment map files (EXR, HDR, PFM, PNG, ...)");
+  // 1 to 6 values for CLI11; plan_outputs refuses any count but six files or one pattern.
+  cmd->add_option("--faces", options.faces,
+                  "Six cube face files in Unity's order: +X -X +Y -Y +Z -Z (instead of inputs); "
+                  "or one pattern with {face}, which becomes px nx py ny pz nz in that order")
+      ->expected(1, static_cast<int>(kFaceNames.size()))
+      ->excludes(inputs);
   CLI::Option* output = cmd->add_option("-o,--output", options.output,
                                         "Output JSON file (default: stdout)");
   cmd->add_option("--out-dir", options.out_dir, "Write DIR/<stem>.json for each input")
       ->excludes(output);
   add_enum_option(*cmd, "--layout", options.layout,
-                  {{"auto", io::Layout::Auto}, {"equirect", io::Layout::Equirect}},
-                  "Image layout; auto: 2:1 is equirect, 1x1 uniform (default auto)");
-  add_enum_option(*cmd, "--method", options.method,
-                  {{"exact", Method::Exact}, {"center", Method::Center}},
-                  "Projection method (default exact)");
+                  {{"auto", io::Layout::Auto}, {"equirect", io::Layout::Equirect},
+                   {"hcross", io::Layout::HorizontalCross}, {"vcross", io::Layout::VerticalCross},
+                   {"hstrip", io::Layout::HorizontalStrip}, {"vstrip", io::Layout::VerticalStrip},
+                   {"octahedral", io::Layout::Octahedral}, {"angular", io::Layout::Angular},
+                   {"mirrorball", io::Layout::MirrorBall}},
+                  "Image layout; auto: 2:1 equirect, 4:3/3:4 crosses, 6:1/1:6 strips, 1x1 uniform "
+                  "(default auto; a square image needs octahedral, angular or mirrorball)");
+  add_enum_option(*cmd, "--cube-frame", options.cube_frame,
+                  {{"unity", CubeFrame::Unity}, {"gl", CubeFrame::Gl}, {"threejs", CubeFrame::ThreeJs}},
+                  "World the cube faces were made in: unity, gl (z mirrored), threejs (default unity)");
+  cmd->add_option("--layer", options.layer, "EXR part or channel layer to read (e.g. diffuse for diffuse.R/G/B)");
+  add_enum_option(*cmd, "--colorspace", options.colorspace,
+                  {{"auto", io::ColorSpace::Auto}, {"linear-rec709", io::ColorSpace::LinearRec709},
+                   {"acescg", io::ColorSpace::AcesCg}, {"aces2065-1", io::ColorSpace::Aces2065_1},
+                   {"linear-p3-d65", io::ColorSpace::LinearP3D65}, {"linear-rec2020", io::ColorSpace::LinearRec2020}},
+                  "Primaries of the input's linear RGB (default auto: the EXR's chromaticities, else Rec. 709)");
+  cmd->add_option("--method", options.method,
+                  "exact, center, mip:K, mc:N, qmc:N, fib:N, is:N, riemann:N, cube:N, "
+                  "cube-exact:N or lsq:N (default exact)")
+      ->check([](const std::string& text) {
+        MethodSpec spec;
+        const Status st = parse_method(text, spec);
+        return st.ok() ? std::string() : "'" + text + "': " + st.what;
+      });
+  cmd->add_option_function<std::uint64_t>(
+      "--seed", [&options](std::uint64_t seed) { options.seed = seed; },
+      "Seed of the random methods mc, qmc and is; the others ignore it (default " +
+          std::to_string(kDefaultMethodSeed) + ")")
+      ->check(unsigned_integer());
   add_enum_option(*cmd, "--nonfinite", options.nonfinite,
                   {{"error", NonFinite::Error}, {"zero", NonFinite::Zero}},
                   "NaN/Inf texels: fail, or count them as 0 (default error)");
@@ -121,7 +220,15 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
         const Status st = parse_window(text, window);
         return st.ok() ? std::string() : std::string(st.what);
       });
-  cmd->add_option("--threads", options.threads, "Worker threads (default 0: all cores)");
+  cmd->add_option("--threads", options.threads, "Worker threads (default 0: all cores)")
+      ->check(unsigned_integer());
+  add_enum_option(*cmd, "--format", options.format,
+                  {{"json", io::OutputFormat::Json}, {"csharp", io::OutputFormat::CSharp},
+                   {"hlsl", io::OutputFormat::Hlsl}, {"unity-yaml", io::OutputFormat::UnityYaml}},
+                  "Output: JSON, a C# SphericalHarmonicsL2, an HLSL include, Unity YAML (default json)");
+  cmd->add_flag("--l1", options.l1, "L1 only (band 2 removed), for Light Probe Proxy Volumes");
+  cmd->add_flag("--extract-sun", options.extract_sun,
+                "Take the sun out of the map and write it as a Unity directional light (JSON \"sun\")");
   return cmd;
 }
 
@@ -147,12 +254,37 @@ int run_convert(const ConvertOptions& options) {
 
   io::ConvertSettings settings;
   settings.env_map.layout = options.layout;
-  settings.env_map.project = {options.method, options.nonfinite, options.negative, options.threads};
+  settings.env_map.layer = options.layer;
+  settings.env_map.cube_frame = options.cube_frame;
+  settings.colorspace = options.colorspace;
+  settings.env_map.project = {Method::Exact, options.nonfinite, options.negative, options.threads};
+  if (!parse_method(options.method, settings.method).ok()) return kExitUsage;  // checked by CLI11
+  if (options.seed) {
+    // "mc:N:SEED" and --seed both name a seed; taking either silently could surprise.
+    if (options.method.find(':') != options.method.rfind(':')) {
+      report_error("convert: give the seed once, in --method or with --seed");
+      return kExitUsage;
+    }
+    settings.method.seed = *options.seed;
+  }
   settings.intensity = factor;
   settings.rotate_deg = options.rotate_deg;
   if (!parse_window(options.window, settings.window).ok()) return kExitUsage;  // checked by CLI11
+  // Files in parallel: up to `threads` files at a time, each projected with its share of the
+  // threads (the output is bit-identical for any thread count); errors reported in input order.
+  const unsigned threads = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  const auto files = static_cast<unsigned>(std::min<std::size_t>(plan.jobs.size(), threads));
+  settings.env_map.project.threads = std::max(1u, threads / files);
   bool all_ok = true;
-  for (const auto& [input, output] : plan.jobs) all_ok = convert_one(input, output, settings) && all_ok;
+  run_in_order<std::string>(
+      plan.jobs.size(), files,
+      [&](std::size_t k) {
+        return convert_one(plan.jobs[k].first, plan.faces, plan.jobs[k].second, settings, options);
+      },
+      [&](std::size_t, std::string& error) {
+        if (!error.empty()) report_error(error);
+        all_ok = all_ok && error.empty();
+      });
   return all_ok ? kExitOk : kExitFailure;
 }
 

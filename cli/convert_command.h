@@ -1,16 +1,24 @@
 // convert_command.h - `shpack convert`: environment maps to Unity SH JSON documents.
 //
 //   shpack convert IN [-o OUT.json]        one map; without -o the JSON goes to stdout
-//   shpack convert IN... --out-dir DIR     one DIR/<stem>.json per map; a failed map is
-//                                          reported and the others are still converted
+//   shpack convert IN... --out-dir DIR     one DIR/<stem>.json per map, in parallel across
+//                                          maps; a failed map is reported (in input order)
+//                                          and the others are still converted
+//   shpack convert --faces PX NX PY NY PZ NZ [-o OUT.json]   six cube face files
+//   shpack convert --faces 'sky_{face}.exr' [-o OUT.json]   the same, {face} = px nx py ny pz nz
 #pragma once
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "shpack/conventions.h"
+#include "shpack/io/colorspace.h"
 #include "shpack/io/layout.h"
+#include "shpack/io/output_format.h"
 #include "shpack/project.h"
 
 namespace shpack::cli {
@@ -20,7 +28,8 @@ struct ConvertOptions {
   std::string output;   // -o; empty: stdout
   std::string out_dir;  // --out-dir
   io::Layout layout = io::Layout::Auto;
-  Method method = Method::Exact;
+  std::string method = "exact";  // --method, parsed by shpack::parse_method
+  std::optional<std::uint64_t> seed;  // --seed: for mc, qmc and is
   NonFinite nonfinite = NonFinite::Error;
   Negative negative = Negative::Keep;
   double intensity = 1.0;  // linear factor
@@ -28,6 +37,13 @@ struct ConvertOptions {
   double rotate_deg = 0.0; // yaw about +Y, degrees (Skybox/Panoramic _Rotation)
   std::string window = "none";  // --window, parsed by shpack::parse_window
   unsigned threads = 0;    // 0: all hardware threads
+  io::OutputFormat format = io::OutputFormat::Json;  // --format
+  bool l1 = false;         // --l1: band 2 removed (io::truncate_to_l1)
+  bool extract_sun = false;  // --extract-sun (io::convert_env_map_extracting_sun)
+  std::vector<std::string> faces;  // --faces: six face files in Unity's order, or one {face} pattern
+  CubeFrame cube_frame = CubeFrame::Unity;  // --cube-frame
+  std::string layer;                        // --layer: EXR part or channel layer
+  io::ColorSpace colorspace = io::ColorSpace::Auto;  // --colorspace
 };
 
 CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options);

@@ -4,8 +4,11 @@
 
 #include <string>
 
+#include "bake_command.h"
+#include "bench_command.h"
 #include "convert_command.h"
 #include "eval_command.h"
+#include "preview_command.h"
 #include "report.h"
 #include "shpack/io/version.h"
 
@@ -21,8 +24,14 @@ int main(int argc, char** argv) {
 
   ConvertOptions convert;
   EvalOptions eval;
+  BenchOptions bench;
+  PreviewOptions preview;
+  BakeCommandOptions bake;
   const CLI::App* convert_app = add_convert_command(app, convert);
-  add_eval_command(app, eval);
+  const CLI::App* eval_app = add_eval_command(app, eval);
+  add_bench_command(app, bench);
+  const CLI::App* preview_app = add_preview_command(app, preview);
+  const CLI::App* bake_app = add_bake_command(app, bake);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
@@ -31,5 +40,8 @@ int main(int argc, char** argv) {
     app.exit(e);
     return kExitUsage;
   }
-  return convert_app->parsed() ? run_convert(convert) : run_eval(eval);
+  if (convert_app->parsed()) return run_convert(convert);
+  if (preview_app->parsed()) return run_preview(preview);
+  if (bake_app->parsed()) return run_bake(bake);
+  return eval_app->parsed() ? run_eval(eval) : run_bench(bench);
 }

@@ -38,4 +38,13 @@ CLI::Validator non_negative_finite_number() {
       "NUMBER >= 0");
 }
 
+CLI::Validator unsigned_integer() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+        return digits ? "" : "'" + text + "' is not an unsigned integer";
+      },
+      "UINT");
+}
+
 }  // namespace shpack::cli

@@ -8,5 +8,7 @@ namespace shpack::cli {
 
 CLI::Validator finite_number();
 CLI::Validator non_negative_finite_number();
+// Digits only: CLI11 reads "-1" into an unsigned option as its largest value.
+CLI::Validator unsigned_integer();
 
 }  // namespace shpack::cli

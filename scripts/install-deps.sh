@@ -12,8 +12,14 @@ packages=(
   nlohmann-json3-dev             # JSON (lib/io)
   libssl-dev                     # SHA-256 of inputs (lib/io), with the CPU's SHA extensions
   libcli11-dev                   # the command line (cli/)
+  libembree-dev                  # ray tracing of shpack bake's visibility effects (lib/bake)
+  libvalijson-dev                # JSON Schema validation of scene files (lib/io)
+  libtinyobjloader-dev           # OBJ meshes in scene files (lib/io)
   libgtest-dev                   # tests/
   libbenchmark-dev               # bench/
+  mono-mcs mono-runtime          # tests/unity: the Unity package's C# compiled and run under Mono
+  clang libclang-rt-14-dev       # tests/fuzz: libFuzzer targets (clang++ -fsanitize=fuzzer)
+  gnuplot-nox                    # shpack bench --plot
 )
 
 missing=()

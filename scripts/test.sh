@@ -1,11 +1,23 @@
 #!/usr/bin/env bash
 # What CI runs: install what is missing, build everything with warnings as errors and
-# AddressSanitizer + UndefinedBehaviorSanitizer into build-asan/, run the whole test suite.
-# Exits non-zero on the first failure.
+# AddressSanitizer + UndefinedBehaviorSanitizer into build-asan/, run the whole test suite
+# except the `large` tests; then the libFuzzer targets (clang, build-fuzz/), each for a
+# bounded time over its seed corpus; then the `large` tests (peak RSS of a streaming convert
+# of a 16384 x 8192 map), which only mean something without ASan, from a Release build
+# (build-large/). Exits non-zero on the first failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 ./scripts/install-deps.sh
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHPACK_WERROR=ON -DSHPACK_SANITIZE=ON
 cmake --build build-asan -j"$(nproc)"
-ctest --test-dir build-asan --output-on-failure -j2
+ctest --test-dir build-asan --output-on-failure -j2 -LE large
+
+cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DSHPACK_BUILD_FUZZERS=ON -DSHPACK_BUILD_TESTS=OFF -DSHPACK_BUILD_BENCH=OFF
+cmake --build build-fuzz -j"$(nproc)" --target shpack_fuzzers
+ctest --test-dir build-fuzz --output-on-failure -j2 -L fuzz
+
+cmake -S . -B build-large -DCMAKE_BUILD_TYPE=Release -DSHPACK_WERROR=ON -DSHPACK_BUILD_BENCH=OFF
+cmake --build build-large -j"$(nproc)" --target shpack shpack_large_tests
+ctest --test-dir build-large --output-on-failure -L large

@@ -22,6 +22,22 @@ ColumnFactors column_factors(std::uint32_t width) noexcept {
   return {dlon, 2.0 * std::sin(0.5 * dlon), 0.5 * std::sin(dlon)};
 }
 
+// Row j of the southern half is the mirror image of row H - 1 - j (theta -> pi - theta:
+// sin theta even, cos theta odd), so its weights are taken from the northern row with the
+// odd-in-cos ones (k1 ~ int cos sin, kxy ~ int sin^2 cos) negated. This is not a shortcut
+// but the precision fix: theta ~ pi rounds with an absolute error ~u pi, which makes
+// sin(theta) near the south pole off by ~2 H u relative (1.8e-12 at H = 8192), while the
+// northern angles are small and exact to a few u.
+template <class Weights>
+RowWeights mirrored_south(Weights weights, std::uint32_t j, std::uint32_t height, std::uint32_t width) noexcept {
+  const std::uint32_t north = height - 1 - j;
+  if (north >= j) return weights(j, height, width);
+  RowWeights w = weights(north, height, width);
+  w.k1 = -w.k1;
+  w.kxy = -w.kxy;
+  return w;
+}
+
 }  // namespace
 
 double x_minus_sin(double x) noexcept {
@@ -36,7 +52,9 @@ double x_minus_sin(double x) noexcept {
   return sum;
 }
 
-RowWeights exact_row_weights(std::uint32_t j, std::uint32_t height, std::uint32_t width) noexcept {
+namespace {
+
+RowWeights exact_northern_row_weights(std::uint32_t j, std::uint32_t height, std::uint32_t width) noexcept {
   // Row j spans theta0 = pi j/H .. theta1 = pi (j+1)/H, half-width h = pi/(2H), centre
   // theta_c. Each theta integral (of f(theta) sin theta dtheta) is written in a form free
   // of cancellation at the poles, from cos a - cos b = 2 sin((a+b)/2) sin((b-a)/2):
@@ -79,7 +97,7 @@ RowWeights exact_row_weights(std::uint32_t j, std::uint32_t height, std::uint32_
   };
 }
 
-RowWeights center_row_weights(std::uint32_t j, std::uint32_t height, std::uint32_t width) noexcept {
+RowWeights center_northern_row_weights(std::uint32_t j, std::uint32_t height, std::uint32_t width) noexcept {
   // P_i(d_centre) * Omega, Omega = A0 dlon the exact texel solid angle, with
   // sin^2 lon = (1 - cos 2lon)/2, cos^2 lon = (1 + cos 2lon)/2, sin cos = sin 2lon / 2.
   const double h = 0.5 * kPi / height;
@@ -97,6 +115,16 @@ RowWeights center_row_weights(std::uint32_t j, std::uint32_t height, std::uint32
       .k8_s0 = omega * (0.5 * s * s - mu * mu),
       .k8_c2 = 0.5 * omega * s * s,
   };
+}
+
+}  // namespace
+
+RowWeights exact_row_weights(std::uint32_t j, std::uint32_t height, std::uint32_t width) noexcept {
+  return mirrored_south(exact_northern_row_weights, j, height, width);
+}
+
+RowWeights center_row_weights(std::uint32_t j, std::uint32_t height, std::uint32_t width) noexcept {
+  return mirrored_south(center_northern_row_weights, j, height, width);
 }
 
 ColumnTrig column_trig(std::uint32_t i, std::uint32_t width) noexcept {

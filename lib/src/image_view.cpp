@@ -1,9 +1,19 @@
 #include "shpack/image_view.h"
 
 #include <bit>
-#include <cstdlib>
+#include <cstdint>
 
 namespace shpack {
+namespace {
+
+constexpr std::uint64_t kMaxBytes = INT64_MAX;
+
+// |s| in uint64: defined for every int64, INT64_MIN included (std::llabs is not).
+constexpr std::uint64_t magnitude(std::int64_t s) noexcept {
+  return s < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(s) : static_cast<std::uint64_t>(s);
+}
+
+}  // namespace
 
 Status resolve_view(ImageView& view) noexcept {
   if (view.data == nullptr) return Status::error(Errc::BadView, "image data is null");
@@ -14,14 +24,23 @@ Status resolve_view(ImageView& view) noexcept {
   const std::int64_t value_bytes = pixel_type_size(view.type);
   const std::int64_t pixel_bytes = value_bytes * view.channels;
   if (view.pixel_stride == kAutoStride) view.pixel_stride = pixel_bytes;
-  // Rows are at least |pixel_stride| * width apart; a 2^31 x 2^31 view of 4 KiB pixels
-  // still fits in int64, so these products cannot overflow for any uint32 size.
-  const std::int64_t row_extent = std::llabs(view.pixel_stride) * view.width;
-  if (view.row_stride == kAutoStride) view.row_stride = row_extent;
-  if (std::llabs(view.pixel_stride) < pixel_bytes && view.width > 1)
+  // Every byte offset pixel() can form, |row_stride| (height - 1) + |pixel_stride| (width - 1),
+  // must fit in int64: strides come from the caller, so the products are checked in uint64
+  // before they are formed (an unchecked |stride| * width is signed overflow for a stride
+  // of 2^62 and a width of 4).
+  const std::uint64_t pixel_step = magnitude(view.pixel_stride);
+  if (pixel_step > kMaxBytes / view.width)
+    return Status::error(Errc::BadView, "pixel stride is too large: a row does not fit in int64 bytes");
+  const std::uint64_t row_extent = pixel_step * view.width;
+  if (view.row_stride == kAutoStride) view.row_stride = static_cast<std::int64_t>(row_extent);
+  const std::uint64_t row_step = magnitude(view.row_stride);
+  if (pixel_step < static_cast<std::uint64_t>(pixel_bytes) && view.width > 1)
     return Status::error(Errc::BadView, "pixel stride is smaller than a pixel: pixels overlap");
-  if (std::llabs(view.row_stride) < row_extent && view.height > 1)
+  if (row_step < row_extent && view.height > 1)
     return Status::error(Errc::BadView, "row stride is smaller than a row: rows overlap");
+  const std::uint64_t last_pixel = pixel_step * (view.width - 1);
+  if (view.height > 1 && row_step > (kMaxBytes - last_pixel) / (view.height - 1))
+    return Status::error(Errc::BadView, "row stride is too large: the image does not fit in int64 bytes");
   return Status::success();
 }
 

@@ -106,12 +106,14 @@ SphereMinimum minimum_on_sphere(const ShL2& sh, int channel) noexcept {
   };
 
   // Regular case: bisection for |m(lambda)| = 1 on [alpha_1 - |b|/2, alpha_1), where
-  // |m|^2 rises monotonically from <= 1 (each term <= beta_k^2 / |b|^2) to infinity.
+  // |m|^2 rises monotonically from <= 1 (each term <= beta_k^2 / |b|^2) to infinity when b
+  // has a component in the bottom eigenspace, and otherwise to |m(alpha_1)|^2: then a root
+  // exists (and the hard case below does not apply) exactly when |m(alpha_1)| > 1.
   const double b_norm = std::sqrt(norm2(b));
   double beta_bottom = 0.0;  // beta's length in the bottom eigenspace
   for (int k = 0; k < 3; ++k)
     if (alpha[k] == alpha[0]) beta_bottom += beta[k] * beta[k];
-  if (beta_bottom != 0.0) {
+  if (beta_bottom != 0.0 || norm2(point(alpha[0])) > 1.0) {
     double lo = alpha[0] - 0.5 * b_norm, hi = alpha[0];
     for (int it = 0; it < 200 && lo < hi; ++it) {
       const double mid = 0.5 * (lo + hi);

@@ -10,6 +10,8 @@ const char* errc_name(Errc code) noexcept {
     case Errc::NonFiniteTexel: return "nonfinite_texel";
     case Errc::BadSequence: return "bad_sequence";
     case Errc::OutOfMemory: return "out_of_memory";
+    case Errc::ProbeInsideLight: return "probe_inside_light";
+    case Errc::OutOfRange: return "out_of_range";
   }
   return "unknown";
 }

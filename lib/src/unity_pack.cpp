@@ -1,5 +1,7 @@
 #include "shpack/unity_pack.h"
 
+#include <cmath>
+
 namespace shpack {
 
 UnitySphericalHarmonicsL2 to_unity_sh(const ShL2& unity_form) noexcept {
@@ -20,6 +22,17 @@ UnityShaderVectors to_shader_vectors(const ShL2& unity_form) noexcept {
   };
   const auto& s = unity_form.c;
   return {a(0), a(1), a(2), b(0), b(1), b(2), {float(s[0][8]), float(s[1][8]), float(s[2][8]), 1.0f}};
+}
+
+bool fits_unity_float32(const ShL2& unity_form) noexcept {
+  for (const auto& channel : to_unity_sh(unity_form))
+    for (const float v : channel)
+      if (!std::isfinite(v)) return false;
+  const UnityShaderVectors v = to_shader_vectors(unity_form);
+  for (const auto* vector : {&v.SHAr, &v.SHAg, &v.SHAb, &v.SHBr, &v.SHBg, &v.SHBb, &v.SHC})
+    for (const float x : *vector)
+      if (!std::isfinite(x)) return false;
+  return true;
 }
 
 float shade_sh9(const UnityShaderVectors& v, int channel, float x, float y, float z) noexcept {

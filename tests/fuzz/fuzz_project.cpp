@@ -1,8 +1,11 @@
 // libFuzzer target: the core projection given arbitrary views (sizes, strides, pixel types,
 // channel counts, values, band splits, threads). The view always lies inside the fuzzer's
 // buffer (a caller's promise the core cannot check); everything else is arbitrary.
-// Property: no crash, no sanitizer report, and either an error Status or finite output
-// whenever the policy zeroes non-finite texels.
+// Properties: no crash, no sanitizer report; a view resolve_view rejects is rejected by
+// project_equirect too (BadView); an accepted one projects to an error Status only for
+// NaN/Inf under NonFinite::Error, and otherwise to finite coefficients, counts that fit the
+// image, and the same bits whether streamed in bands or projected in one call (project.h).
+// resolve_view also gets arbitrary 64-bit strides (validation only, nothing is read).
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -22,12 +25,37 @@ struct Reader {
     for (int k = 0; k < 2 && size > 0; ++k, ++data, --size) v = (v << 8) | *data;
     return modulo == 0 ? v : v % modulo;
   }
+  std::int64_t take64() {
+    std::uint64_t v = 0;
+    for (int k = 0; k < 8 && size > 0; ++k, ++data, --size) v = (v << 8) | *data;
+    std::int64_t s;
+    std::memcpy(&s, &v, sizeof s);
+    return s;
+  }
 };
+
+// resolve_view on any strides and sizes: it only validates (no pixel is read), so the data
+// pointer need not cover the view. It must not overflow while checking.
+void fuzz_resolve(Reader& in) {
+  shpack::ImageView view;
+  view.data = reinterpret_cast<const std::byte*>(&in);  // never dereferenced by resolve_view
+  view.type = in.take(2) == 0 ? shpack::PixelType::F32 : shpack::PixelType::F16;
+  view.width = in.take(0) << 16 | in.take(0);
+  view.height = in.take(0) << 16 | in.take(0);
+  view.channels = in.take(0);
+  view.pixel_stride = in.take64();
+  view.row_stride = in.take64();
+  (void)shpack::resolve_view(view);
+}
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   Reader in{data, size};
+  if (in.take(16) == 15) {  // one input in 16: the validator alone, with wild strides
+    fuzz_resolve(in);
+    return 0;
+  }
   shpack::ImageView view;
   view.width = in.take(40);
   view.height = in.take(24);
@@ -62,18 +90,37 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   shpack::ProjectStats stats;
   shpack::ImageView resolved = view;
   if (!shpack::resolve_view(resolved).ok()) {
-    (void)shpack::project_equirect(view, options, sh, &stats);  // must fail cleanly
+    if (shpack::project_equirect(view, options, sh, &stats).code != shpack::Errc::BadView) std::abort();
     return 0;
   }
   shpack::EquirectProjector projector;
-  if (!projector.begin(resolved.width, resolved.height, options).ok()) return 0;
+  if (!projector.begin(resolved.width, resolved.height, options).ok()) std::abort();  // valid size and method
   for (std::uint32_t y = 0; y < resolved.height; y += band) {
     const std::uint32_t n = std::min(band, resolved.height - y);
-    if (!projector.add_rows(resolved.rows(y, n), y).ok()) return 0;
+    const shpack::Status st = projector.add_rows(resolved.rows(y, n), y);
+    if (!st.ok()) {
+      // Only NaN/Inf under NonFinite::Error may stop it, at a texel of the rows seen so far.
+      if (st.code != shpack::Errc::NonFiniteTexel || options.nonfinite != shpack::NonFinite::Error) std::abort();
+      if (st.y >= y + n || st.x >= resolved.width) std::abort();
+      return 0;
+    }
   }
   if (!projector.finish(sh, &stats).ok()) std::abort();  // every row was added
   for (const auto& channel : sh.c)
     for (double c : channel)
       if (!std::isfinite(c)) std::abort();  // finite inputs (NaN/Inf zeroed) give finite sums
+  const std::uint64_t texels = std::uint64_t{resolved.width} * resolved.height;
+  if (stats.nonfinite_texels > texels || stats.negative_texels > texels || !(stats.max_value >= 0)) std::abort();
+  if (stats.nonfinite_texels != 0 && (stats.first_nonfinite_x >= resolved.width || stats.first_nonfinite_y >= resolved.height))
+    std::abort();
+  // Bands and threads never change the result (project.h): one call, one thread.
+  shpack::ProjectOptions one = options;
+  one.threads = 1;
+  shpack::ShL2 again;
+  shpack::ProjectStats again_stats;
+  if (!shpack::project_equirect(view, one, again, &again_stats).ok()) std::abort();
+  if (std::memcmp(&again, &sh, sizeof sh) != 0) std::abort();
+  if (again_stats.nonfinite_texels != stats.nonfinite_texels || again_stats.negative_texels != stats.negative_texels)
+    std::abort();
   return 0;
 }

@@ -136,7 +136,7 @@ TEST(Cli, ErrorsSayHowToGoOn) {
   ASSERT_TRUE(shpack_io_test::write_constant_image(dir / "odd.exr", 6, 4, {1.0f, 1.0f, 1.0f}));
   run = shpack(dir, {"convert", (dir / "odd.exr").string()});
   EXPECT_EQ(run.exit_code, 1);
-  EXPECT_NE(run.err.find("; pass --layout equirect if it is one\n"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("; name the layout with --layout\n"), std::string::npos) << run.err;
   EXPECT_EQ(shpack(dir, {"convert", (dir / "odd.exr").string(), "--layout", "equirect"}).exit_code, 0);
 }
 

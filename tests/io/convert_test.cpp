@@ -32,7 +32,7 @@ TEST(Convert, DocumentDescribesTheSource) {
   EXPECT_EQ(doc.source.layout, Layout::Equirect);
   EXPECT_EQ(doc.source.width, 1024u);
   EXPECT_EQ(doc.source.height, 512u);
-  EXPECT_EQ(doc.method, Method::Exact);
+  EXPECT_EQ(doc.method, MethodSpec{});  // exact
   EXPECT_EQ(doc.intensity, 1.0);
   // data/hdri/README.md: courtyard has small negative texels from lossy compression.
   EXPECT_GT(doc.diagnostics.negative_texels, 0u);

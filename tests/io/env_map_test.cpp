@@ -191,7 +191,8 @@ TEST(EnvMap, OtherShapesNeedAnExplicitLayout) {
   const IoStatus st = project_env_map(dir / "odd.exr", {}, p);
   EXPECT_EQ(st.code, IoErrc::UnknownLayout);
   EXPECT_EQ(st.message, (dir / "odd.exr").string() +
-                            ": the layout of a 6x4 image cannot be detected (2:1 is equirect, 1x1 is uniform)");
+                            ": the layout of a 6x4 image cannot be detected: it fits no layout (2:1 equirect, 4:3 hcross, "
+                            "3:4 vcross, 6:1 hstrip, 1:6 vstrip, square octahedral, angular or mirrorball)");
   EnvMapOptions equirect;
   equirect.layout = Layout::Equirect;
   expect_uniform(project(dir / "odd.exr", equirect), {1.0, 1.0, 1.0}, kUniformTol);

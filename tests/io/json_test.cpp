@@ -26,7 +26,7 @@ ShDocument sample_document() {
   std::uniform_real_distribution<double> coefficient(-3.0, 3.0);
   ShDocument doc;
   doc.source = {{"sky.exr"}, {std::string(64, 'a')}, Layout::Equirect, 1024, 512};
-  doc.method = Method::Center;
+  doc.method = {SamplingMethod::MonteCarlo, 4096, 7};  // a seed other than the default
   doc.intensity = 0.1;
   for (auto& channel : doc.radiance.c)
     for (double& v : channel) v = coefficient(rng);
@@ -49,7 +49,7 @@ TEST(JsonWriter, KeysAreThoseOfTheDesignInOrder) {
   EXPECT_EQ(keys(j), (std::vector<std::string>{"schema_version", "generator", "source", "options", "frame",
                                                "radiance_sh", "sphericalHarmonicsL2", "shader",
                                                "diagnostics"}));
-  EXPECT_EQ(keys(j["source"]), (std::vector<std::string>{"files", "sha256", "layout", "width", "height"}));
+  EXPECT_EQ(keys(j["source"]), (std::vector<std::string>{"files", "sha256", "layout", "width", "height", "colorspace"}));
   EXPECT_EQ(keys(j["options"]), (std::vector<std::string>{"method", "window", "rotate_deg", "intensity"}));
   EXPECT_EQ(keys(j["shader"]), (std::vector<std::string>{"unity_SHAr", "unity_SHAg", "unity_SHAb", "unity_SHBr",
                                                          "unity_SHBg", "unity_SHBb", "unity_SHC"}));
@@ -69,7 +69,7 @@ TEST(JsonWriter, ValuesAreThoseOfTheDocument) {
   EXPECT_EQ(j["source"]["layout"], "equirect");
   EXPECT_EQ(j["source"]["width"], 1024);
   EXPECT_EQ(j["source"]["height"], 512);
-  EXPECT_EQ(j["options"]["method"], "center");
+  EXPECT_EQ(j["options"]["method"], "mc:4096:7");  // method_name: parse_method reads it back
   EXPECT_EQ(j["options"]["window"], "none");
   EXPECT_EQ(j["options"]["rotate_deg"], 0);
   EXPECT_EQ(j["options"]["intensity"].get<double>(), 0.1);

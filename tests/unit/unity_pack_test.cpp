@@ -166,6 +166,23 @@ TEST(Convolution, UnityFormEvaluatesToIrradianceOverPi) {
   }
 }
 
+TEST(UnityPack, FitsFloat32ChecksTheShaderVectorsToo) {
+  // FLT_MAX = 3.4028e38. s0 = 3e38 and s6 = -1e38 fit as floats, but SHA.w = s0 - s6 = 4e38
+  // does not; s6 = 2e38 fits but SHB.z = 3 s6 = 6e38 does not. (Regression: convert and bake
+  // checked only the 27 floats and wrote null into "shader".)
+  ShL2 sh;
+  sh.c[1][0] = 3e38;
+  EXPECT_TRUE(shpack::fits_unity_float32(sh));
+  sh.c[1][6] = -1e38;
+  EXPECT_FALSE(shpack::fits_unity_float32(sh));
+  sh = {};
+  sh.c[2][6] = 2e38;
+  EXPECT_FALSE(shpack::fits_unity_float32(sh));
+  sh = {};
+  sh.c[0][8] = 4e38;  // one of the 27, and SHC.x
+  EXPECT_FALSE(shpack::fits_unity_float32(sh));
+}
+
 TEST(Convolution, ScaledMultipliesEveryCoefficient) {
   const ShL2 sh = distinct_unity_form();
   const ShL2 s = shpack::scaled(sh, 2.5);

@@ -82,4 +82,33 @@ inline constexpr std::array<CubeFaceAxes, 6> kCubeFaceAxes = {{
     {{-1, 0, 0}, {0, -1, 0}, {0, 0, -1}},  // -Z
 }};
 
+// The world a set of cube faces was made in (docs/conventions.md, "Faces made for other
+// engines"). The face table above gives a direction d in that world; Unity's is:
+//   Unity:   d                      (the default: faces as Unity shows them)
+//   Gl:      (d.x, d.y, -d.z)       right-handed OpenGL world: a z mirror
+//   ThreeJs: (-d.x, d.y, -d.z)      three.js samples cube textures with x negated
+//                                   (flipEnvMap = -1), then the z mirror: a 180 degree
+//                                   turn about +Y. Unconfirmed against a three.js render.
+enum class CubeFrame : std::uint8_t { Unity, Gl, ThreeJs };
+
+// Unity's direction of a direction d of faces made in `frame`.
+constexpr Dir3 cube_frame_to_unity(CubeFrame frame, Dir3 d) noexcept {
+  switch (frame) {
+    case CubeFrame::Gl: return {d.x, d.y, -d.z};
+    case CubeFrame::ThreeJs: return {-d.x, d.y, -d.z};
+    case CubeFrame::Unity: break;
+  }
+  return d;
+}
+
+// What the frame does to L2 coefficients projected in it: each map above is a sign change
+// of some axes, so coefficient i changes sign with its polynomial P_i (sh_basis.h):
+// z -> -z flips i = 2 (z), 5 (yz), 7 (xz) (kMirrorZSign); (x, z) -> (-x, -z) flips
+// i = 2 (z), 3 (x), 4 (xy), 5 (yz) and keeps 7 (xz = (-x)(-z)).
+inline constexpr std::array<double, 9> kThreeJsSign = {1, 1, -1, -1, -1, -1, 1, 1, 1};
+inline constexpr std::array<double, 9> kUnitySign = {1, 1, 1, 1, 1, 1, 1, 1, 1};
+constexpr const std::array<double, 9>& cube_frame_sign(CubeFrame frame) noexcept {
+  return frame == CubeFrame::Gl ? kMirrorZSign : frame == CubeFrame::ThreeJs ? kThreeJsSign : kUnitySign;
+}
+
 }  // namespace shpack

@@ -18,6 +18,8 @@ enum class Errc : std::uint8_t {
   NonFiniteTexel,   // a NaN or Inf texel under NonFinite::Error; x, y, face locate the first
   BadSequence,      // a streaming call out of order (rows not contiguous, finish twice)
   OutOfMemory,      // a documented buffer or a worker thread could not be created
+  ProbeInsideLight, // a probe lies inside (or on) a light's volume (lights.h)
+  OutOfRange,       // a result does not fit its output type (Unity's float32 coefficients)
 };
 
 struct [[nodiscard]] Status {

@@ -33,6 +33,10 @@ UnitySphericalHarmonicsL2 to_unity_sh(const ShL2& unity_form) noexcept;
 // when it starts from the 27 floats up to one float rounding.
 UnityShaderVectors to_shader_vectors(const ShL2& unity_form) noexcept;
 
+// Whether every float of to_unity_sh and of to_shader_vectors is finite: both must be, since
+// SHA.w = s0 - s6 and SHB.z = 3 s6 can overflow float32 while the 27 floats fit.
+bool fits_unity_float32(const ShL2& unity_form) noexcept;
+
 // Unity's ShadeSH9 in float: SHEvalLinearL0L1(n) + SHEvalLinearL2(n) for one channel [3],
 // evaluated from the packed vectors exactly as the shader does.
 float shade_sh9(const UnityShaderVectors& v, int channel, float x, float y, float z) noexcept;

@@ -1,33 +1,25 @@
 #include "shpack/io/image_file.h"
 
 #include <new>
-#include <span>
 
-#include "image_open.h"
-#include "pixel_encoding.h"
+#include "image_source.h"
 
 namespace shpack::io {
 
-IoStatus read_image_file(const std::filesystem::path& path, ImageFile& out) {
+IoStatus read_image_file(const std::filesystem::path& path, const std::string& layer, ImageFile& out) {
   try {
-    std::unique_ptr<OIIO::ImageInput> in;
-    if (IoStatus st = detail::open_image(path, in); !st.ok()) return st;
-    const OIIO::ImageSpec& spec = in->spec();
-    if (const std::string problem = detail::spec_problem(spec); !problem.empty())
-      return IoStatus::error(IoErrc::Unsupported, path, problem);
+    detail::ImageSource source;
+    if (IoStatus st = source.open(path, layer); !st.ok()) return st;
     ImageFile image;
-    image.width = static_cast<std::uint32_t>(spec.width);
-    image.height = static_cast<std::uint32_t>(spec.height);
-    image.file_channels = static_cast<std::uint32_t>(spec.nchannels);
-    image.channels = image.file_channels >= 3 ? 3 : 1;
-    image.format = in->format_name();
-    image.srgb_decoded = detail::pixel_transfer(spec, image.format) == detail::Transfer::Srgb;
+    image.width = source.width();
+    image.height = source.height();
+    image.file_channels = source.file_channels();
+    image.channels = source.channels();
+    image.format = source.format();
+    image.srgb_decoded = source.srgb_decoded();
+    image.chromaticities = source.chromaticities();
     image.pixels.resize(std::size_t{image.width} * image.height * image.channels);
-    if (!in->read_image(0, 0, 0, static_cast<int>(image.channels), OIIO::TypeDesc::FLOAT,
-                        image.pixels.data())) {
-      return IoStatus::error(IoErrc::Unreadable, path, "cannot read the pixels (" + in->geterror() + ")");
-    }
-    if (image.srgb_decoded) detail::decode_srgb(image.pixels);
+    if (IoStatus st = source.read_rows(0, image.height, image.pixels.data()); !st.ok()) return st;
     out = std::move(image);
     return IoStatus::success();
   } catch (const std::bad_alloc&) {

@@ -22,11 +22,7 @@ std::string spec_problem(const OIIO::ImageSpec& spec) {
   if (spec.nchannels <= 0) return "the image has no channels";
   if (spec.deep) return "the image holds deep data, not an environment map";
   if (spec.depth > 1) return "the image is a volume, not an environment map";
-  // Texels outside a smaller data window would be lost from the sphere without a word.
-  if (spec.x != spec.full_x || spec.y != spec.full_y || spec.width != spec.full_width ||
-      spec.height != spec.full_height) {
-    return "the data window differs from the display window, which is not supported";
-  }
+  // A data window other than the display window is fine: image_source.h reads it.
   return {};
 }
 

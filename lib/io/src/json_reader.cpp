@@ -74,6 +74,10 @@ ShJsonContent content_of(const Json& doc) {
     const std::string pointer = std::string("/shader/") + key;
     out.shader.*vector = elements<4>(member(shader, "/shader", key), pointer, float32);
   }
+  if (const auto options = doc.find("options"); options != doc.end() && options->is_object()) {
+    if (options->contains("intensity")) out.intensity = number((*options)["intensity"], "/options/intensity");
+    if (options->contains("rotate_deg")) out.rotate_deg = number((*options)["rotate_deg"], "/options/rotate_deg");
+  }
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "json_keys.h"
+#include "shpack/io/sun.h"
 #include "shpack/io/version.h"
 #include "shpack/unity_pack.h"
 
@@ -29,6 +30,37 @@ Json sh_json(const ShL2& sh) {
   return out;
 }
 
+// The sun of --extract-sun (sun.h): what was removed, and the Unity light that replaces it.
+Json sun_json(const SunLight& sun) {
+  const UnitySunLight light = unity_sun_light(sun);
+  return {{"direction", dir_json(sun.direction)},
+          {"irradiance", sun.irradiance},
+          {"sky_level", sun.sky},
+          {"angular_radius_deg", sun.radius_deg},
+          {"solid_angle_sr", sun.solid_angle},
+          {"texels", sun.texels},
+          {"unity_light",
+           {{"forward", dir_json(light.forward)},
+            {"euler_deg", light.euler_deg},
+            {"quaternion", light.quaternion},
+            {"color", light.colour},
+            {"color_srgb", light.colour_srgb},
+            {"intensity", light.intensity}}}};
+}
+
+const char* cube_frame_name(CubeFrame frame) {
+  return frame == CubeFrame::Gl ? "gl" : frame == CubeFrame::ThreeJs ? "threejs" : "unity";
+}
+
+// "layer" when one was chosen, "cube_frame" for cube layouts, "colorspace" always, and the
+// colour matrix when one was applied.
+void add_reading(const ShDocument& doc, Json& source) {
+  if (!doc.reading.layer.empty()) source["layer"] = doc.reading.layer;
+  if (is_cube_layout(doc.source.layout)) source["cube_frame"] = cube_frame_name(doc.reading.cube_frame);
+  source["colorspace"] = doc.reading.colorspace;
+  if (doc.colour_matrix) source["rgb_to_rec709"] = *doc.colour_matrix;
+}
+
 }  // namespace
 
 std::string to_json(const ShDocument& doc) {
@@ -40,10 +72,12 @@ std::string to_json(const ShDocument& doc) {
                  {"layout", layout_name(doc.source.layout)},
                  {"width", doc.source.width},
                  {"height", doc.source.height}};
-  j["options"] = {{"method", method_name(doc.method)},
+  add_reading(doc, j["source"]);
+  j["options"] = {{"method", std::string(method_name(doc.method).view())},
                   {"window", window_name(doc.window).text},
                   {"rotate_deg", doc.rotate_deg},
                   {"intensity", doc.intensity}};
+  if (doc.l1) j["options"]["l1"] = true;  // --l1 (output_format.h): only when given
   j["frame"] = "unity: left-handed, +Y up, +Z forward";
   j["radiance_sh"] = sh_json(doc.radiance);
 
@@ -69,6 +103,7 @@ std::string to_json(const ShDocument& doc) {
                       {"min_e_over_pi_direction", std::move(min_directions)},
                       {"window_factors", diag.window_factors},
                       {"window_impossible", diag.window_impossible}};
+  if (doc.sun_extraction) j["sun"] = doc.sun ? sun_json(*doc.sun) : Json(nullptr);  // null: no sun found
   // A file name need not be UTF-8 on Linux: replace bad bytes rather than fail.
   return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }

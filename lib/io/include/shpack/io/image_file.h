@@ -3,11 +3,14 @@
 // equirect path (env_map.h) never holds the whole image.
 //
 // Pixels are decoded exactly as env_map.h describes (float as stored, integer sRGB
-// linearised, grey kept as one channel, alpha and extra channels dropped and counted).
+// linearised, grey kept as one channel, alpha and extra channels dropped and counted; the
+// layer chosen by name; the display window, black outside the data window).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +25,7 @@ struct ImageFile {
   std::uint32_t file_channels = 0;     // channels in the file
   bool srgb_decoded = false;           // integer sRGB pixels were linearised
   std::string format;                  // OpenImageIO's format name
+  std::optional<std::array<double, 8>> chromaticities;  // the file's, if it says (colorspace.h)
   std::vector<float> pixels;           // row-major, top row first, `channels` per texel
 
   std::uint32_t ignored_channels() const noexcept { return file_channels - channels; }
@@ -29,7 +33,11 @@ struct ImageFile {
   ImageView view() const noexcept { return make_view(pixels.data(), width, height, channels); }
 };
 
-// Reads all of `path`. Errors name the file, as project_env_map's do.
-IoStatus read_image_file(const std::filesystem::path& path, ImageFile& out);
+// Reads all of `path`: the layer `layer` (image_source.h; "" for the default choice). Errors
+// name the file, as project_env_map's do.
+IoStatus read_image_file(const std::filesystem::path& path, const std::string& layer, ImageFile& out);
+inline IoStatus read_image_file(const std::filesystem::path& path, ImageFile& out) {
+  return read_image_file(path, std::string(), out);
+}
 
 }  // namespace shpack::io

@@ -16,4 +16,10 @@ inline double srgb_to_linear(double encoded) noexcept {
   return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
 }
 
+// Its inverse, the sRGB encoding of IEC 61966-2-1, linear value in [0, 1] -> encoded value:
+// v <= 0.0031308 ? 12.92 v : 1.055 v^(1/2.4) - 0.055 (shpack preview writes sRGB images).
+inline double linear_to_srgb(double linear) noexcept {
+  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
+
 }  // namespace shpack::io

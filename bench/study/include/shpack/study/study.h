@@ -1,0 +1,49 @@
+// study.h - the accuracy and the time of projection methods on one map (`shpack bench`).
+//
+// For each spec: one untimed projection gives the result (and warms the caches), then
+// `repeats` timed projections of the same in-memory image, each timed alone with
+// std::chrono::steady_clock (wall clock), give the median, min and max. Only the projection
+// is timed: the image is read or made before, and the error measured after. The reference
+// is exact (Method::Exact) of the same image, with the same options.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "shpack/io/io_status.h"
+#include "shpack/sampling_methods.h"
+#include "shpack/study/accuracy.h"
+#include "shpack/study/study_inputs.h"
+
+namespace shpack::study {
+
+struct StudySettings {
+  unsigned repeats = 5;  // timed runs per spec, >= 1
+  unsigned threads = 1;  // ProjectOptions::threads (0 = all cores); only exact, center, mip use it
+};
+
+struct StudyRecord {
+  std::string input;
+  std::uint32_t width = 0, height = 0;
+  MethodSpec spec;
+  unsigned threads = 1;      // threads the method ran on (1 for those that ignore the option)
+  unsigned repeats = 0;
+  double samples = 0;        // sample_count (method_sweep.h)
+  double time_ms_median = 0, time_ms_min = 0, time_ms_max = 0;
+  AccuracyMetrics accuracy;
+};
+
+// Called after each spec, with the number of specs done and their total.
+using StudyProgress = std::function<void(const StudyRecord&, std::size_t done, std::size_t total)>;
+
+// Appends one record per spec to `out`. Texels are read with NonFinite::Zero (a NaN in a
+// user's map must not stop the study; convert reports them) and Negative::Keep. Errors
+// name the input: InvalidArgument for repeats == 0, Core for a projection that fails
+// (OutOfMemory for a large mip or is buffer, or an invalid spec).
+io::IoStatus run_study(const StudyImage& image, const std::vector<MethodSpec>& specs,
+                       const StudySettings& settings, std::vector<StudyRecord>& out,
+                       const StudyProgress& progress = {});
+
+}  // namespace shpack::study

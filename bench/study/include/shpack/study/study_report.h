@@ -1,0 +1,48 @@
+// study_report.h - what `shpack bench` prints: a markdown report, or JSON records.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "shpack/study/study.h"
+
+namespace shpack::study {
+
+// One spec over every input it ran on: the summary row and the plotted point.
+struct SpecSummary {
+  MethodSpec spec;
+  int inputs = 0;
+  double time_ms = 0;       // median over the inputs of time_ms_median
+  double err_max_pct = 0;   // worst input
+  double err_rms_pct = 0;   // median over the inputs
+  double coef_err_max = 0;  // worst input
+  double samples = 0;       // median over the inputs (they differ only for mip and exact)
+};
+
+// In the order the specs first appear in `records`. NaN errors (black maps) are left out
+// of the worst and the median; a spec with only NaN errors has NaN.
+std::vector<SpecSummary> summarize(const std::vector<StudyRecord>& records);
+
+// The convergence rate of one method on one input: the least-squares slope of
+// log(err_rms_pct) against log(samples) over its runs with a positive error. -0.5 is Monte
+// Carlo's N^-1/2; -1 is an O(h^2) rule on a 2-D grid (samples ~ h^-2).
+struct ConvergenceFit {
+  std::string input;
+  SamplingMethod method = SamplingMethod::Exact;
+  double slope = 0;
+  int points = 0;  // >= 3: fewer runs give no fit
+};
+std::vector<ConvergenceFit> convergence_fits(const std::vector<StudyRecord>& records);
+
+// Markdown: a summary over the inputs (when there are several), the convergence slopes
+// (per input and their median), then one table per input.
+std::string markdown_report(const std::vector<StudyRecord>& records);
+
+// A JSON array, one object per record, with the keys input, width, height, method (the
+// name without parameter), param (null for exact and center), spec (method_name), seed
+// (null for the methods that ignore it), threads, repeats, samples, time_ms_median,
+// time_ms_min, time_ms_max, err_max_pct, err_rms_pct, coef_err_max, min_e_over_pi
+// (NaN is null). Ends with a line break.
+std::string json_report(const std::vector<StudyRecord>& records);
+
+}  // namespace shpack::study

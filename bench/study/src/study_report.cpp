@@ -1,0 +1,203 @@
+#include "shpack/study/study_report.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <map>
+
+#include "shpack/study/method_sweep.h"
+
+namespace shpack::study {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string spec_name(const MethodSpec& spec) { return std::string(method_name(spec).view()); }
+
+// Three significant digits: what a timing on a shared machine or an error estimate is worth.
+std::string fmt(double v) {
+  if (std::isnan(v)) return "n/a";
+  if (v == 0) return "0";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", v);
+  return text;
+}
+
+std::string fmt_count(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0f", v);
+  return text;
+}
+
+// Median of the non-NaN values; NaN if there are none.
+double median_of(std::vector<double> values) {
+  std::erase_if(values, [](double v) { return std::isnan(v); });
+  if (values.empty()) return kNaN;
+  std::sort(values.begin(), values.end());
+  const std::size_t mid = values.size() / 2;
+  return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+}
+
+double max_of(const std::vector<double>& values) {
+  double worst = kNaN;
+  for (const double v : values)
+    if (!std::isnan(v) && !(v <= worst)) worst = v;
+  return worst;
+}
+
+std::vector<std::string> inputs_in_order(const std::vector<StudyRecord>& records) {
+  std::vector<std::string> inputs;
+  for (const StudyRecord& r : records)
+    if (std::find(inputs.begin(), inputs.end(), r.input) == inputs.end()) inputs.push_back(r.input);
+  return inputs;
+}
+
+void summary_section(const std::vector<StudyRecord>& records, std::size_t input_count, std::string& md) {
+  md += "## All " + std::to_string(input_count) + " inputs\n\n";
+  md += "Time: median over the inputs. Errors of E/pi in % of its mean: worst input (max), "
+        "median input (rms). Coefficient error: worst input, relative to L00.\n\n";
+  md += "| method | samples | time ms | err max % | err rms % | coef err max |\n";
+  md += "|---|---:|---:|---:|---:|---:|\n";
+  for (const SpecSummary& s : summarize(records)) {
+    md += "| " + spec_name(s.spec) + " | " + fmt_count(s.samples) + " | " + fmt(s.time_ms) + " | " +
+          fmt(s.err_max_pct) + " | " + fmt(s.err_rms_pct) + " | " + fmt(s.coef_err_max) + " |\n";
+  }
+  md += "\n";
+}
+
+// One row per method: the median slope, then the slope on each input (its file stem).
+void convergence_section(const std::vector<StudyRecord>& records, std::string& md) {
+  const std::vector<ConvergenceFit> fits = convergence_fits(records);
+  if (fits.empty()) return;
+  const std::vector<std::string> inputs = inputs_in_order(records);
+  std::map<SamplingMethod, std::map<std::string, double>> slope;  // method -> input -> slope
+  for (const ConvergenceFit& fit : fits) slope[fit.method][fit.input] = fit.slope;
+  md += "## Convergence\n\n";
+  md += "Slope of log(err rms) against log(samples), fitted per input over the runs with an error "
+        "above 0: -0.5 is N^-1/2 (Monte Carlo), -1 is h^2 on a 2-D grid.\n\n";
+  md += "| method | median |";
+  for (const std::string& input : inputs) md.append(" ").append(fs::path(input).stem().string()).append(" |");
+  md += "\n|---|---:|";
+  for (std::size_t i = 0; i < inputs.size(); ++i) md += "---:|";
+  md += "\n";
+  for (const auto& [method, by_input] : slope) {
+    std::vector<double> values;
+    for (const auto& [input, s] : by_input) values.push_back(s);
+    md += "| " + family_name(method) + " | " + fmt(median_of(values)) + " |";
+    for (const std::string& input : inputs) {
+      const auto it = by_input.find(input);
+      md.append(" ").append(it == by_input.end() ? std::string("n/a") : fmt(it->second)).append(" |");
+    }
+    md += "\n";
+  }
+  md += "\n";
+}
+
+void input_section(const std::vector<StudyRecord>& records, const std::string& input, std::string& md) {
+  const StudyRecord* first = nullptr;
+  for (const StudyRecord& r : records)
+    if (r.input == input && first == nullptr) first = &r;
+  md += "## " + input + " (" + std::to_string(first->width) + "x" + std::to_string(first->height) + ")\n\n";
+  md += "| method | samples | ms median | ms min | ms max | err max % | err rms % | coef err max | min E/pi |\n";
+  md += "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const StudyRecord& r : records) {
+    if (r.input != input) continue;
+    const AccuracyMetrics& a = r.accuracy;
+    md += "| " + spec_name(r.spec) + " | " + fmt_count(r.samples) + " | " + fmt(r.time_ms_median) +
+          " | " + fmt(r.time_ms_min) + " | " + fmt(r.time_ms_max) + " | " + fmt(a.err_max_pct) + " | " +
+          fmt(a.err_rms_pct) + " | " + fmt(a.coef_err_max) + " | " + fmt(a.min_e_over_pi) + " |\n";
+  }
+  md += "\n";
+}
+
+}  // namespace
+
+std::vector<SpecSummary> summarize(const std::vector<StudyRecord>& records) {
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<const StudyRecord*>> by_spec;
+  for (const StudyRecord& r : records) {
+    const std::string name = spec_name(r.spec);
+    if (by_spec[name].empty()) order.push_back(name);
+    by_spec[name].push_back(&r);
+  }
+  std::vector<SpecSummary> out;
+  for (const std::string& name : order) {
+    const std::vector<const StudyRecord*>& runs = by_spec[name];
+    std::vector<double> time, err_max, err_rms, coef, samples;
+    for (const StudyRecord* r : runs) {
+      time.push_back(r->time_ms_median);
+      err_max.push_back(r->accuracy.err_max_pct);
+      err_rms.push_back(r->accuracy.err_rms_pct);
+      coef.push_back(r->accuracy.coef_err_max);
+      samples.push_back(r->samples);
+    }
+    out.push_back({runs.front()->spec, static_cast<int>(runs.size()), median_of(time), max_of(err_max),
+                   median_of(err_rms), max_of(coef), median_of(samples)});
+  }
+  return out;
+}
+
+std::vector<ConvergenceFit> convergence_fits(const std::vector<StudyRecord>& records) {
+  std::vector<ConvergenceFit> fits;
+  for (const std::string& input : inputs_in_order(records)) {
+    std::map<SamplingMethod, std::vector<std::pair<double, double>>> points;  // log samples, log err
+    for (const StudyRecord& r : records) {
+      if (r.input == input && r.accuracy.err_rms_pct > 0)
+        points[r.spec.method].emplace_back(std::log(r.samples), std::log(r.accuracy.err_rms_pct));
+    }
+    for (const auto& [method, xy] : points) {
+      if (xy.size() < 3) continue;
+      double mx = 0, my = 0;
+      for (const auto& [x, y] : xy) mx += x, my += y;
+      mx /= xy.size(), my /= xy.size();
+      double sxy = 0, sxx = 0;
+      for (const auto& [x, y] : xy) sxy += (x - mx) * (y - my), sxx += (x - mx) * (x - mx);
+      if (sxx > 0) fits.push_back({input, method, sxy / sxx, static_cast<int>(xy.size())});
+    }
+  }
+  return fits;
+}
+
+std::string markdown_report(const std::vector<StudyRecord>& records) {
+  const std::vector<std::string> inputs = inputs_in_order(records);
+  std::string md;
+  if (inputs.size() > 1) summary_section(records, inputs.size(), md);
+  convergence_section(records, md);
+  for (const std::string& input : inputs) input_section(records, input, md);
+  return md;
+}
+
+std::string json_report(const std::vector<StudyRecord>& records) {
+  Json array = Json::array();
+  for (const StudyRecord& r : records) {
+    const bool has_param = r.spec.method != SamplingMethod::Exact && r.spec.method != SamplingMethod::Center;
+    Json j;
+    j["input"] = r.input;
+    j["width"] = r.width;
+    j["height"] = r.height;
+    j["method"] = family_name(r.spec.method);
+    j["param"] = has_param ? Json(r.spec.param) : Json(nullptr);
+    j["spec"] = spec_name(r.spec);
+    j["seed"] = uses_seed(r.spec.method) ? Json(r.spec.seed) : Json(nullptr);
+    j["threads"] = r.threads;
+    j["repeats"] = r.repeats;
+    j["samples"] = r.samples;
+    j["time_ms_median"] = r.time_ms_median;
+    j["time_ms_min"] = r.time_ms_min;
+    j["time_ms_max"] = r.time_ms_max;
+    j["err_max_pct"] = r.accuracy.err_max_pct;  // nlohmann writes NaN as null
+    j["err_rms_pct"] = r.accuracy.err_rms_pct;
+    j["coef_err_max"] = r.accuracy.coef_err_max;
+    j["min_e_over_pi"] = r.accuracy.min_e_over_pi;
+    array.push_back(std::move(j));
+  }
+  return array.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace shpack::study

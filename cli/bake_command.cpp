@@ -1,0 +1,91 @@
+#include "bake_command.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "enum_option.h"
+#include "report.h"
+#include "shpack/bake/bake.h"
+#include "shpack/io/atomic_write.h"
+#include "shpack/io/scene_loader.h"
+
+namespace shpack::cli {
+namespace {
+
+// "\rshpack bake: shadows   [##########..........]  50%  5000/10000 probes", ended by a
+// line break when the pass completes.
+void draw_progress(const char* pass, std::size_t done, std::size_t total) {
+  constexpr int kWidth = 30;
+  const int filled = total ? static_cast<int>(kWidth * done / total) : kWidth;
+  std::string bar(filled, '#');
+  bar.resize(kWidth, '.');
+  std::fprintf(stderr, "\rshpack bake: %-13s [%s] %3d%%  %zu/%zu probes", pass, bar.c_str(),
+               total ? static_cast<int>(100 * done / total) : 100, done, total);
+  if (done == total) std::fputc('\n', stderr);
+  std::fflush(stderr);
+}
+
+}  // namespace
+
+CLI::App* add_bake_command(CLI::App& app, BakeCommandOptions& options) {
+  CLI::App* cmd = app.add_subcommand("bake", "Bake a scene (lights, environment, effects) into one SH per probe");
+  cmd->add_option("scene", options.scene, "The scene file (docs/scenes.md)")->required();
+  cmd->add_option("-o,--output", options.output, "Output JSON file (default: stdout)");
+  add_enum_option(*cmd, "--format", options.format,
+                  {{"full", bake::BakeFormat::Full}, {"unity-probes", bake::BakeFormat::UnityProbes}},
+                  "full: every probe's keys and the effects' costs; unity-probes: flat positions and "
+                  "SphericalHarmonicsL2 arrays (default full)");
+  cmd->add_option("--window", options.window,
+                  "Deringing per probe: none, hanning:W, lanczos:W, unity or sloan (default none)")
+      ->check([](const std::string& text) {
+        Window window;
+        const Status st = parse_window(text, window);
+        return st.ok() ? std::string() : std::string(st.what);
+      });
+  cmd->add_option("--threads", options.threads, "Worker threads (default 0: all cores)");
+  cmd->add_flag("--quiet", options.quiet, "No progress bar on stderr");
+  return cmd;
+}
+
+int run_bake(const BakeCommandOptions& options) {
+  bake::BakeJsonOptions json_options;
+  json_options.format = options.format;
+  if (!parse_window(options.window, json_options.window).ok()) return kExitUsage;  // checked by CLI11
+
+  io::Scene scene;
+  if (io::IoStatus st = io::load_scene(options.scene, scene); !st.ok()) {
+    report_error(st.message);
+    return kExitFailure;
+  }
+  bake::BakeOptions bake_options;
+  bake_options.threads = options.threads;
+  if (!options.quiet && isatty(STDERR_FILENO)) bake_options.progress = draw_progress;
+  bake::BakeResult result;
+  if (io::IoStatus st = bake::bake(scene, bake_options, result); !st.ok()) {
+    report_error(st.message);
+    return kExitFailure;
+  }
+  std::string json;
+  if (io::IoStatus st = bake::bake_to_json(scene, result, json_options, json); !st.ok()) {
+    report_error(st.message);
+    return kExitFailure;
+  }
+  if (options.output.empty()) {
+    std::cout << json << std::flush;
+    if (!std::cout) {
+      report_error("stdout: cannot write the JSON");
+      return kExitFailure;
+    }
+    return kExitOk;
+  }
+  if (io::IoStatus st = io::write_file_atomically(options.output, json); !st.ok()) {
+    report_error(st.message);
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace shpack::cli

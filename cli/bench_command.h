@@ -1,0 +1,37 @@
+// bench_command.h - `shpack bench [INPUTS...]`: what accuracy costs in time, per method.
+//
+// For each input (default: the bundled maps data/hdri/*.exr, then the synthetic maps of
+// bench/study/include/shpack/study/study_inputs.h) and each method and parameter
+// (method_sweep.h), the error against exact (accuracy.h) and the time of the projection
+// (study.h). stdout gets a markdown report, or with --json a JSON array; --plot PREFIX
+// draws PREFIX.png and PREFIX.svg (plot.h). Progress goes to stderr, one line per run.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "shpack/sampling_methods.h"
+
+namespace shpack::cli {
+
+struct BenchOptions {
+  std::vector<std::string> inputs;  // files or synthetic:NAME; empty: the defaults
+  std::string methods;              // --methods; empty: every method's sweep
+  unsigned repeats = 5;             // timed runs per method and parameter
+  unsigned threads = 1;             // for exact, center, mip; 0: all cores
+  std::uint64_t seed = kDefaultMethodSeed;
+  bool quick = false;               // a shorter sweep (CI)
+  bool json = false;
+  std::string plot;                 // --plot PREFIX; empty: no plot
+};
+
+CLI::App* add_bench_command(CLI::App& app, BenchOptions& options);
+
+// Exit code: kExitOk, kExitFailure if an input or the plot failed (the other inputs are
+// still measured and reported), kExitUsage for a bad command line.
+int run_bench(const BenchOptions& options);
+
+}  // namespace shpack::cli

@@ -1,0 +1,79 @@
+#include "preview_command.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "report.h"
+#include "shpack/io/json_reader.h"
+#include "shpack/io/preview.h"
+
+namespace shpack::cli {
+namespace {
+
+std::string percent(double part, double whole) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g%%", whole > 0 ? 100.0 * part / whole : 0.0);
+  return text;
+}
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", v);
+  return text;
+}
+
+}  // namespace
+
+CLI::App* add_preview_command(CLI::App& app, PreviewOptions& options) {
+  CLI::App* cmd = app.add_subcommand("preview", "Pictures of the lighting: lit spheres, E/pi, error map (PNG)");
+  cmd->add_option("document", options.document, "A JSON file written by shpack convert")->required();
+  cmd->add_option("-o,--output", options.output, "The image to write (.png)")->required();
+  cmd->add_option("--input", options.input,
+                  "The equirect map the document came from: adds its brute-force E/pi and the error map");
+  cmd->add_option("--size", options.size, "Sphere diameter in pixels (default 128)")
+      ->check(CLI::Range(32, 1024));
+  return cmd;
+}
+
+int run_preview(const PreviewOptions& options) {
+  const std::filesystem::path output = options.output;
+  if (output.extension() != ".png" && output.extension() != ".PNG") {
+    report_error("preview: " + options.output + ": the image is written as PNG; name it .png");
+    return kExitUsage;
+  }
+  io::ShJsonContent content;
+  if (io::IoStatus st = io::read_sh_json(options.document, content); !st.ok()) {
+    report_error(st.message);
+    return kExitFailure;
+  }
+  io::PreviewSettings settings;
+  settings.size = options.size;
+  settings.reference = options.input;
+  settings.reference_label = std::filesystem::path(options.input).filename().string();
+  io::Rgb8Image image;
+  io::PreviewReport report;
+  if (io::IoStatus st = io::render_preview(content, settings, image, report); !st.ok()) {
+    report_error(st.message);
+    return kExitFailure;
+  }
+  if (io::IoStatus st = io::write_png(output, image); !st.ok()) {
+    report_error(st.message);
+    return kExitFailure;
+  }
+  std::cout << "tone mapping: Reinhard x/(1+x) per channel, then sRGB; mean E/pi luminance "
+            << number(report.mean_luminance) << " shown at 0.5\n"
+            << "negative E/pi (striped): " << percent(report.negative_fraction, 1.0) << " of the sphere\n";
+  if (report.has_reference) {
+    const double bound = report.reference_bound_luminance;
+    std::cout << "reference: brute-force E/pi over " << report.cells_w << "x" << report.cells_h
+              << " cells, error <= " << number(bound) << " (" << percent(bound, report.mean_luminance)
+              << " of the mean)\n"
+              << "sh - reference (luminance): max |error| " << number(report.max_abs_error) << " ("
+              << percent(report.max_abs_error, report.mean_luminance) << " of the mean), rms "
+              << number(report.rms_error) << " (" << percent(report.rms_error, report.mean_luminance) << ")\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace shpack::cli

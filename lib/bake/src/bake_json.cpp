@@ -1,0 +1,124 @@
+#include "shpack/bake/bake_json.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+#include "shpack/convolution.h"
+#include "shpack/io/version.h"
+#include "shpack/sh_minimum.h"
+#include "shpack/unity_pack.h"
+
+namespace shpack::bake {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json sh_json(const ShL2& sh) {
+  Json out = Json::array();
+  for (const auto& channel : sh.c) out.push_back(channel);
+  return out;
+}
+
+template <std::size_t N>
+Json floats_json(const std::array<float, N>& values) {
+  Json out = Json::array();
+  for (const float v : values) out.push_back(static_cast<double>(v));
+  return out;
+}
+
+// The inside of a JSON array, "a,b,c", of the values given (nlohmann's shortest forms).
+std::string array_items(const Json& array) {
+  const std::string text = array.dump();
+  return text.substr(1, text.size() - 2);
+}
+
+}  // namespace
+
+io::IoStatus bake_to_json(const io::Scene& scene, const BakeResult& result, const BakeJsonOptions& options,
+                          std::string& json) {
+  try {
+    // Probes are formatted one at a time and appended as text, so memory holds the output and
+    // one probe's tree, not a tree of every number.
+    std::string probes, positions, flat;
+    for (std::size_t k = 0; k < result.radiance.size(); ++k) {
+      ShL2 unity_form;
+      WindowResult windowed;
+      if (Status st = apply_window(radiance_to_unity_form(result.radiance[k]), options.window, unity_form, &windowed);
+          !st.ok())
+        return io::IoStatus::error(io::IoErrc::InvalidArgument, scene.file, io::probe_label(scene, k) + ": " + st.what);
+      if (!fits_unity_float32(unity_form))
+        return io::IoStatus::error(io::IoErrc::Unsupported, scene.file,
+                                   io::probe_label(scene, k) + ": too bright for Unity's float32 coefficients");
+      const UnitySphericalHarmonicsL2 unity_sh = to_unity_sh(unity_form);
+      const Point3& p = scene.probes[k];
+      const char* separator = k == 0 ? "" : ",";
+      if (options.format == BakeFormat::UnityProbes) {
+        Json position = Json::array(), sh = Json::array();
+        for (const double v : {p.x, p.y, p.z}) position.push_back(static_cast<double>(static_cast<float>(v)));
+        for (const auto& channel : unity_sh)
+          for (const float v : channel) sh.push_back(static_cast<double>(v));
+        positions.append(separator).append(array_items(position));
+        flat.append(separator).append(array_items(sh));
+        continue;
+      }
+      Json probe;
+      probe["position"] = {p.x, p.y, p.z};
+      probe["radiance_sh"] = sh_json(apply_band_factors(result.radiance[k], windowed.factors));
+      Json sh = Json::array();
+      for (const auto& channel : unity_sh) sh.push_back(floats_json(channel));
+      probe["sphericalHarmonicsL2"] = std::move(sh);
+      const UnityShaderVectors v = to_shader_vectors(unity_form);
+      probe["shader"] = {{"unity_SHAr", floats_json(v.SHAr)}, {"unity_SHAg", floats_json(v.SHAg)},
+                         {"unity_SHAb", floats_json(v.SHAb)}, {"unity_SHBr", floats_json(v.SHBr)},
+                         {"unity_SHBg", floats_json(v.SHBg)}, {"unity_SHBb", floats_json(v.SHBb)},
+                         {"unity_SHC", floats_json(v.SHC)}};
+      Json min_values = Json::array(), min_directions = Json::array();
+      for (int c = 0; c < kChannelCount; ++c) {
+        const SphereMinimum m = minimum_on_sphere(unity_form, c);
+        min_values.push_back(m.value);
+        min_directions.push_back({m.direction.x, m.direction.y, m.direction.z});
+      }
+      probe["diagnostics"] = {{"min_e_over_pi", std::move(min_values)},
+                              {"min_e_over_pi_direction", std::move(min_directions)},
+                              {"window_factors", windowed.factors}};
+      probes.append(separator).append("\n    ").append(probe.dump(-1, ' ', false, Json::error_handler_t::replace));
+    }
+    if (options.format == BakeFormat::UnityProbes) {
+      json = "{\"schema_version\":1,\"format\":\"unity-probes\",\"count\":" + std::to_string(result.radiance.size()) +
+             ",\"positions\":[" + positions + "],\"sphericalHarmonicsL2\":[" + flat + "]}\n";
+      return io::IoStatus::success();
+    }
+    Json j;
+    j["schema_version"] = 1;
+    j["generator"] = std::string("shpack ") + io::shpack_version();
+    j["scene"] = {{"file", scene.file.filename().string()}, {"sha256", scene.sha256},
+                  {"probes", scene.probes.size()}, {"lights", scene.lights.size()},
+                  {"shapes", scene.geometry.size()}, {"seed", scene.settings.seed}};
+    j["frame"] = "unity: left-handed, +Y up, +Z forward";
+    j["options"] = {{"window", window_name(options.window).text}};
+    j["probes"] = nullptr;  // replaced by the probes' text below
+    Json effects = Json::object();
+    for (std::size_t e = 0; e < kEffectCount; ++e) {
+      const EffectCost& c = result.costs[e];
+      if (!c.enabled) continue;
+      effects[effect_name(static_cast<Effect>(e))] = {{"time_ms", c.time_ms}, {"cpu_ms", c.cpu_ms},
+                                                      {"rays", c.rays},       {"samples", c.samples},
+                                                      {"analytic", c.analytic}};
+    }
+    j["effects"] = std::move(effects);
+    j["geometry"] = {{"built", result.geometry.built}, {"time_ms", result.geometry.time_ms},
+                     {"triangles", result.geometry.triangles}, {"spheres", result.geometry.spheres}};
+    // One probe per line inside the indented document. The only top-level "probes": null is
+    // the placeholder ("scene" holds "probes" too, as a number).
+    json = j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+    const std::string placeholder = "\n  \"probes\": null,";
+    const std::size_t at = json.find(placeholder);
+    json.replace(at, placeholder.size(), "\n  \"probes\": [" + probes + "\n  ],");
+    return io::IoStatus::success();
+  } catch (const std::exception& e) {
+    return io::IoStatus::error(io::IoErrc::Core, scene.file, std::string("cannot write the JSON: ") + e.what());
+  }
+}
+
+}  // namespace shpack::bake

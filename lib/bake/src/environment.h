@@ -1,0 +1,35 @@
+// environment.h (private) - the scene's environment: its SH, projected once, and its radiance
+// in one direction (for the effects that trace rays).
+#pragma once
+
+#include <vector>
+
+#include "shpack/io/image_file.h"
+#include "shpack/io/io_status.h"
+#include "shpack/io/scene.h"
+#include "shpack/rotate.h"
+#include "tracer.h"
+
+namespace shpack::bake {
+
+class EnvironmentSource {
+ public:
+  // Projects the environment (an env map through project_env_map, exactly as `shpack convert`
+  // does, then intensity and rotation; a gradient sky in closed form). With `need_lookup`, an
+  // env map's pixels are also kept for radiance(). Errors name the scene file and the map.
+  io::IoStatus load(const io::Scene& scene, bool need_lookup, unsigned threads);
+
+  const ShL2& sh() const noexcept { return sh_; }
+
+  // Radiance arriving from unit direction d (Unity's frame): the texel of the rotated map that
+  // contains d (the map is piecewise constant, as its projection takes it), or the gradient.
+  Rgb radiance(const Vec3d& d) const noexcept;
+
+ private:
+  io::SceneEnvironment env_;
+  ShL2 sh_;
+  io::ImageFile image_;
+  Matrix3 rotation_{};  // R_y of the map's rotation; radiance(d) reads the map at R^T d
+};
+
+}  // namespace shpack::bake

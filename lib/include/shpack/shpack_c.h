@@ -1,0 +1,142 @@
+/* shpack_c.h - the C ABI of shpack: Unity L2 spherical harmonics from pixels in memory.
+ *
+ * For Unity native plugins (P/Invoke), other languages and other build systems: plain C
+ * types, fixed-size arrays, caller-owned memory, an opaque handle for streaming, and an
+ * error code plus a message on every fallible call. Nothing throws across this boundary and
+ * nothing here keeps hidden error state: a message is a static string, valid forever.
+ *
+ * What it computes is what `shpack convert` computes for an equirect map (docs/json-format.md,
+ * docs/conventions.md): radiance coefficients in Unity's frame, the 27 floats of a
+ * UnityEngine.Rendering.SphericalHarmonicsL2, the seven shader vectors unity_SHAr..unity_SHC,
+ * and the minimum of E/pi per channel, bit-identical to the CLI's JSON for the same texels
+ * and options (pipeline.h).
+ *
+ * Layout of the arrays, all channel-major (R, G, B):
+ *   radiance_sh[9 c + i]   L_c,i, doubles
+ *   unity_sh[9 c + i]      SphericalHarmonicsL2 sh[c, i], floats
+ *   shader[4 v + k]        v = 0..6: unity_SHAr, SHAg, SHAb, SHBr, SHBg, SHBb, SHC; k = x, y, z, w
+ *
+ * Structs have a fixed layout on every 64-bit platform (no padding between members as
+ * declared; shpack_result has 4 bytes of tail padding), so C# can mirror them with
+ * LayoutKind.Sequential. Thread safety: every function
+ * may be called from any thread; one projector must not be used by two threads at once.
+ */
+#ifndef SHPACK_C_H
+#define SHPACK_C_H
+
+#include <stdint.h>
+
+#if defined(_WIN32)
+#if defined(SHPACK_C_BUILDING)
+#define SHPACK_C_API __declspec(dllexport)
+#else
+#define SHPACK_C_API __declspec(dllimport)
+#endif
+#elif defined(__GNUC__)
+#define SHPACK_C_API __attribute__((visibility("default")))
+#else
+#define SHPACK_C_API
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Raised when a function, struct or meaning changes incompatibly. */
+#define SHPACK_C_ABI_VERSION 1
+
+/* Return codes (int32_t). */
+enum {
+  SHPACK_OK = 0,
+  SHPACK_INVALID_ARGUMENT = 1, /* an option, pointer or size out of its domain (see message) */
+  SHPACK_BAD_VIEW = 2,         /* the image description is malformed (strides, sizes, null data) */
+  SHPACK_NONFINITE_TEXEL = 3,  /* NaN/Inf texel under SHPACK_NONFINITE_ERROR; error.x, .y locate the first */
+  SHPACK_BAD_SEQUENCE = 4,     /* a projector call out of order (rows not contiguous, finished twice) */
+  SHPACK_OUT_OF_MEMORY = 5,    /* a buffer or a worker thread could not be created */
+  SHPACK_OUT_OF_RANGE = 6,     /* the lighting is too bright for Unity's float32 coefficients */
+  SHPACK_INTERNAL = 99         /* an error of the core this ABI version does not name */
+};
+
+/* Texel types of shpack_image. */
+enum { SHPACK_PIXEL_F32 = 0, SHPACK_PIXEL_F16 = 1 };
+/* shpack_options.method: exact integrals per texel, or the basis at texel centres. */
+enum { SHPACK_METHOD_EXACT = 0, SHPACK_METHOD_CENTER = 1 };
+/* shpack_options.nonfinite: fail on NaN/Inf texels, or count them as 0. */
+enum { SHPACK_NONFINITE_ERROR = 0, SHPACK_NONFINITE_ZERO = 1 };
+/* shpack_options.negative: keep negative texels, or count them as 0. */
+enum { SHPACK_NEGATIVE_KEEP = 0, SHPACK_NEGATIVE_CLAMP = 1 };
+
+typedef struct shpack_error {
+  int32_t code;        /* SHPACK_OK or an error code */
+  uint32_t x, y, face; /* the texel, for SHPACK_NONFINITE_TEXEL */
+  const char* message; /* static, never freed: "ok" or what went wrong */
+} shpack_error;
+
+/* A view of pixels the caller owns: an equirect (latitude-longitude) image as Unity's
+ * Skybox/Panoramic maps it, or a band of its rows (shpack_projector_add_rows). Values are
+ * linear radiance. channels: 1 = grey, 2 = grey + alpha, 3 = RGB, 4+ = RGB + ignored. */
+typedef struct shpack_image {
+  const void* data;
+  int32_t pixel_type;     /* SHPACK_PIXEL_F32 or SHPACK_PIXEL_F16 */
+  uint32_t width, height, channels;
+  int64_t pixel_stride;   /* bytes between pixels of a row; 0: packed */
+  int64_t row_stride;     /* bytes between rows, may be negative (bottom-up images); 0: packed */
+} shpack_image;
+
+typedef struct shpack_options {
+  int32_t method;      /* SHPACK_METHOD_* */
+  int32_t nonfinite;   /* SHPACK_NONFINITE_* */
+  int32_t negative;    /* SHPACK_NEGATIVE_* */
+  uint32_t threads;    /* worker threads, 0 = all cores; the result does not depend on it */
+  double intensity;    /* linear factor on the radiance, finite and >= 0 */
+  double rotate_deg;   /* yaw about +Y, the sense and number of Skybox/Panoramic's _Rotation */
+  const char* window;  /* "none", "hanning:W", "lanczos:W", "unity", "sloan"; NULL = "none" */
+} shpack_options;
+
+typedef struct shpack_result {
+  double radiance_sh[27];    /* L_c,i with intensity, rotation and window applied */
+  double min_e_over_pi[3];   /* exact minimum over the sphere of E/pi, per channel */
+  double min_direction[9];   /* where it is attained, (x, y, z) per channel, Unity's frame */
+  double window_factors[9];  /* per channel, the factors applied to bands 0, 1, 2 */
+  uint64_t nonfinite_texels; /* texels with a NaN/Inf channel (counted as 0 under ZERO) */
+  uint64_t negative_texels;  /* texels with a negative channel */
+  float unity_sh[27];        /* SphericalHarmonicsL2 sh[c, i] */
+  float shader[28];          /* unity_SHAr .. unity_SHC */
+} shpack_result;
+
+/* The library's ABI version (SHPACK_C_ABI_VERSION when it was built) and version text. */
+SHPACK_C_API int32_t shpack_abi_version(void);
+SHPACK_C_API const char* shpack_version(void);
+
+/* A short stable name of a return code ("ok", "invalid_argument", ...). */
+SHPACK_C_API const char* shpack_status_name(int32_t code);
+
+/* exact, error, keep, all cores, intensity 1, no rotation, no window. */
+SHPACK_C_API void shpack_default_options(shpack_options* options);
+
+/* Projects a whole equirect image and finishes it as `shpack convert` does. `error` may be
+ * NULL. On failure `result` is left as it was. */
+SHPACK_C_API int32_t shpack_convert_equirect(const shpack_image* image, const shpack_options* options,
+                                             shpack_result* result, shpack_error* error);
+
+/* Streaming, for images that do not fit in memory: create with the full size, add bands of
+ * consecutive rows from the top (any heights), finish once, destroy. Memory is bounded by
+ * the caller's band. The result equals shpack_convert_equirect's on the whole image. */
+typedef struct shpack_projector shpack_projector;
+SHPACK_C_API int32_t shpack_projector_create(uint32_t width, uint32_t height, const shpack_options* options,
+                                             shpack_projector** projector, shpack_error* error);
+SHPACK_C_API int32_t shpack_projector_add_rows(shpack_projector* projector, const shpack_image* rows,
+                                               uint32_t first_row, shpack_error* error);
+SHPACK_C_API int32_t shpack_projector_finish(shpack_projector* projector, shpack_result* result,
+                                             shpack_error* error);
+SHPACK_C_API void shpack_projector_destroy(shpack_projector* projector); /* NULL is allowed */
+
+/* Unity's ShadeSH9 (SHEvalLinearL0L1 + SHEvalLinearL2), in float, from the 28 shader floats,
+ * for the normal (x, y, z) in Unity's frame: E/pi per channel into rgb[3]. */
+SHPACK_C_API int32_t shpack_shade_sh9(const float shader[28], float x, float y, float z, float rgb[3]);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SHPACK_C_H */

@@ -1,0 +1,114 @@
+// preview.h - pictures of an output document (`shpack preview`), to judge lighting by eye.
+//
+// One sRGB 8-bit image with these panels (S = PreviewSettings::size):
+//
+//   "front"  S x S   a white diffuse sphere seen from -Z (Unity's default camera looks along
+//                    +Z): screen right +X, up +Y; the pixel's normal is (sx, sy, -sqrt(1 - r^2))
+//   "top"    S x S   the same sphere seen from above (+Y): screen right +X, up +Z;
+//                    normal (sx, sqrt(1 - r^2), sy)
+//   "sh"     2S x S  E/pi over all directions, laid out as an equirect map (conventions.h:
+//                    centre column +X, a quarter from the left +Z, top row +Y)
+//
+// Every value is what Unity's shader returns, ShadeSH9(n) = SHEvalLinearL0L1 +
+// SHEvalLinearL2 evaluated in float from the document's shader vectors (unity_pack.h's
+// shade_sh9). Where any channel is negative (L2 ringing, which the built-in Standard shader
+// clamps to 0), the pixel is marked with magenta diagonal stripes on black.
+//
+// With a reference map (the input the document came from, equirect):
+//
+//   "reference"  2S x S  the brute-force E/pi of the map: (1/pi) sum over texels of
+//                        L int max(0, n.w) dw, with the document's intensity and rotation
+//   "error"      2S x S  luminance of sh - reference, blue (sh too dark) - white - red (too
+//                        bright), with a colour bar labelled with its end values
+//
+// Reference accuracy. For speed the map is summed in cells (kReferenceCellsW x
+// kReferenceCellsH, refined where needed, see below). A cell T holding texels (or parts of
+// texels) t is represented by its
+// exact flux vector m_T = sum_t L_t int_t w dw, its positive and negative flux
+// P_T = sum_t max(L_t, 0) Omega_t, N_T = sum_t max(-L_t, 0) Omega_t, its centre direction c_T
+// and a radius r_T >= the angle from c_T to any point of the cell (half its theta extent plus
+// max sin(theta) times half its longitude extent: along a meridian, then a parallel). For a
+// normal n with d = n.c_T, every w in T has |n.w - d| <= r_T, so the cell's true contribution
+// C = sum_t L_t int_t max(0, n.w) dw is:
+//   - exactly n.m_T if d >= r_T (the cosine is linear on the cell), exactly 0 if d <= -r_T;
+//   - otherwise (the terminator crosses the cell) in both [n.m_T - N_T h, n.m_T + P_T h]
+//     with h = r_T - d (as max(0, x) = x + max(0, -x)) and [-N_T g, P_T g] with g = d + r_T:
+//     the preview takes the middle of their intersection and adds its half-width to the bound.
+// So the reference's error is at most the reported bound (divided by pi), up to rounding. A cut
+// cell is first split into its 2 x 2 children (kReferenceLevels levels), which shrinks the bound
+// about 4x per level: on the bundled 1024 x 512 maps it is 0.2% to 2.7% of the mean E/pi at
+// worst (the largest where a sun sits on the terminator), and a preview takes about a second.
+//
+// Tone mapping, the same for every panel: v -> Reinhard(k v) = k v / (1 + k v) per channel,
+// then the sRGB encoding (IEC 61966-2-1), with k = 1 / (mean E/pi luminance), the luminance
+// of the L00 terms (sh[c][0] is the mean of E/pi over the sphere): an average-lit normal is
+// shown at 0.5 before encoding. Luminance weights are Unity's LinearRgbToLuminance
+// (0.2126729, 0.7151522, 0.0721750; UnityCG.cginc).
+//
+// Labels are drawn with a built-in 5x7 bitmap font (upper case, digits, a few signs), so the
+// image does not depend on fonts installed on the machine (OpenImageIO's render_text needs
+// one, and finds none on a bare Debian 12).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "shpack/io/io_status.h"
+#include "shpack/io/json_reader.h"
+
+namespace shpack::io {
+
+// The reference's cells: 64 x 32 on top, refined twice (2 x 2 each) where the terminator
+// crosses them, down to 256 x 128.
+inline constexpr std::uint32_t kReferenceCellsW = 64, kReferenceCellsH = 32;
+inline constexpr int kReferenceLevels = 3;
+
+// An 8-bit sRGB RGB image, row-major from the top.
+struct Rgb8Image {
+  std::uint32_t width = 0, height = 0;
+  std::vector<std::uint8_t> pixels;  // 3 per pixel
+
+  const std::uint8_t* at(std::uint32_t x, std::uint32_t y) const { return &pixels[(std::size_t{y} * width + x) * 3]; }
+  std::uint8_t* at(std::uint32_t x, std::uint32_t y) { return &pixels[(std::size_t{y} * width + x) * 3]; }
+};
+
+struct PreviewSettings {
+  std::uint32_t size = 128;          // S, the sphere's diameter in pixels; 32..1024
+  std::filesystem::path reference;   // an equirect map; empty: no reference panels
+  std::string reference_label;       // how the reference is named in the image (its file name)
+};
+
+// Where each panel is, for readers of the image (tests, the gallery).
+struct PanelRect {
+  std::uint32_t x = 0, y = 0, width = 0, height = 0;
+};
+
+struct PreviewReport {
+  double exposure = 1;                 // k of the tone mapping
+  double mean_luminance = 0;           // luminance of the L00 terms: mean E/pi
+  double negative_fraction = 0;        // share of the sphere where a channel of ShadeSH9 < 0
+  PanelRect front, top, sh;            // the panels
+  bool has_reference = false;          // the fields below are set only with a reference
+  PanelRect reference, error, colour_bar;
+  std::uint32_t cells_w = 0, cells_h = 0;  // the reference's cells
+  std::array<double, 3> reference_bound{};  // per channel: max over pixels of the bound, E/pi units
+  double reference_bound_luminance = 0;     // max over pixels of the luminance of the bound
+  double error_scale = 0;              // the colour bar spans [-error_scale, +error_scale]
+  double max_abs_error = 0;            // luminance of sh - reference, max over pixels
+  double rms_error = 0;                // root mean square over the sphere (solid-angle weighted)
+};
+
+// Renders the panels for `content` (and settings.reference if set). Errors name the
+// reference file: unreadable, not equirect (2:1, or 1x1), or with NaN/Inf texels; and
+// InvalidArgument for a size outside 32..1024.
+IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& settings, Rgb8Image& image,
+                        PreviewReport& report);
+
+// Writes `image` as PNG through write_file_atomically (atomic_write.h): the file is replaced
+// whole or not at all.
+IoStatus write_png(const std::filesystem::path& path, const Rgb8Image& image);
+
+}  // namespace shpack::io

@@ -1,0 +1,66 @@
+// image_source.h (private) - the pixels of one image file as shpack reads them: the chosen
+// part and channels, the display window, linear float.
+//
+// Which pixels:
+//  - Part and channels. Without a layer: subimage 0, its channels named R, G, B (any order in
+//    the file), else Y (grey); a file whose channel names carry no layer prefix ("diffuse.R")
+//    falls back to its first three channels (or its first, if it has fewer than three), as
+//    for PNG, HDR, PFM. With a layer NAME: the subimage (EXR part) named NAME, read as above;
+//    else the channels NAME.R, NAME.G, NAME.B (or NAME.Y) of the first subimage that has them.
+//    Anything else fails and lists the file's layers.
+//  - Window. The image is the display window (OpenEXR's displayWindow, OpenImageIO's "full"
+//    window); texels outside the data window are black (0), and data outside the display
+//    window is not read.
+//  - Values. Converted to float by OpenImageIO (integers as value / max), integer sRGB
+//    linearised (pixel_encoding.h), nothing else changed; alpha and other channels dropped.
+#pragma once
+
+#include <OpenImageIO/imageio.h>
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "shpack/io/io_status.h"
+
+namespace shpack::io::detail {
+
+class ImageSource {
+ public:
+  // Opens `path` and chooses its part and channels. Errors name the file.
+  IoStatus open(const std::filesystem::path& path, const std::string& layer);
+
+  std::uint32_t width() const noexcept { return width_; }    // display window
+  std::uint32_t height() const noexcept { return height_; }
+  std::uint32_t channels() const noexcept { return used_; }  // per texel read: 1 (grey) or 3
+  std::uint32_t file_channels() const noexcept { return file_channels_; }  // of the chosen part
+  std::uint32_t ignored_channels() const noexcept { return file_channels_ - used_; }
+  bool srgb_decoded() const noexcept { return srgb_; }
+  const std::string& format() const noexcept { return format_; }
+  // The EXR "chromaticities" attribute (red x, y, green x, y, blue x, y, white x, y), if any.
+  const std::optional<std::array<double, 8>>& chromaticities() const noexcept { return chromaticities_; }
+  void set_threads(unsigned threads) { in_->threads(static_cast<int>(threads)); }
+
+  // Display rows [first, first + count) into `out` (count * width() * channels() floats,
+  // row-major). Errors name the file and the rows.
+  IoStatus read_rows(std::uint32_t first, std::uint32_t count, float* out);
+
+ private:
+  std::filesystem::path path_;
+  std::unique_ptr<OIIO::ImageInput> in_;
+  OIIO::ImageSpec spec_;  // of the chosen subimage
+  int subimage_ = 0;
+  std::array<int, 3> channel_{};      // file channel of R, G, B (of grey in [0])
+  int first_channel_ = 0, last_channel_ = 0;  // the contiguous range read, [first, last)
+  std::uint32_t width_ = 0, height_ = 0, used_ = 0, file_channels_ = 0;
+  bool srgb_ = false;
+  std::string format_;
+  std::optional<std::array<double, 8>> chromaticities_;
+  std::vector<float> scratch_;  // a band of data rows, when they cannot be read in place
+};
+
+}  // namespace shpack::io::detail

@@ -1,0 +1,211 @@
+#include "shpack/io/preview.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <optional>
+
+#include "preview_draw.h"
+#include "preview_reference.h"
+#include "shpack/conventions.h"
+#include "shpack/io/image_file.h"
+#include "shpack/io/layout.h"
+#include "shpack/rotate.h"
+#include "shpack/unity_pack.h"
+
+namespace shpack::io {
+namespace {
+
+using detail::Rgb8;
+
+// Unity's LinearRgbToLuminance (UnityCG.cginc): Rec. 709 primaries, D65 white.
+constexpr std::array<double, 3> kLuminance = {0.2126729, 0.7151522, 0.0721750};
+constexpr std::uint32_t kMargin = 4;       // between panels
+constexpr std::uint32_t kTitleHeight = 11; // a text line with its spacing
+
+double luminance(const std::array<double, 3>& rgb) {
+  return kLuminance[0] * rgb[0] + kLuminance[1] * rgb[1] + kLuminance[2] * rgb[2];
+}
+
+std::array<double, 3> shade(const ShJsonContent& content, const Dir3& n) {
+  const auto x = static_cast<float>(n.x), y = static_cast<float>(n.y), z = static_cast<float>(n.z);
+  return {shade_sh9(content.shader, 0, x, y, z), shade_sh9(content.shader, 1, x, y, z),
+          shade_sh9(content.shader, 2, x, y, z)};
+}
+
+// A tone-mapped pixel, or the negative mark if a channel is below 0.
+Rgb8 display(const std::array<double, 3>& value, double exposure, std::uint32_t x, std::uint32_t y) {
+  if (value[0] < 0 || value[1] < 0 || value[2] < 0) return detail::negative_mark(x, y);
+  return {detail::tone_map(value[0], exposure), detail::tone_map(value[1], exposure),
+          detail::tone_map(value[2], exposure)};
+}
+
+void put(Rgb8Image& image, std::uint32_t x, std::uint32_t y, Rgb8 colour) {
+  std::copy(colour.begin(), colour.end(), image.at(x, y));
+}
+
+// The direction of pixel (x, y) of a width x height equirect panel, and its solid angle.
+Dir3 panel_direction(std::uint32_t x, std::uint32_t y, std::uint32_t width, std::uint32_t height) {
+  return equirect_direction((x + 0.5) / width, (y + 0.5) / height);
+}
+double panel_solid_angle(std::uint32_t y, std::uint32_t width, std::uint32_t height) {
+  const double t0 = std::numbers::pi * y / height, t1 = std::numbers::pi * (y + 1) / height;
+  return (2.0 * std::numbers::pi / width) * 2.0 * std::sin(0.5 * (t0 + t1)) * std::sin(0.5 * (t1 - t0));
+}
+
+// "front": seen from -Z; "top": seen from +Y (preview.h). Outside the disc: background.
+void draw_sphere(Rgb8Image& image, const PanelRect& rect, bool top, const ShJsonContent& content, double exposure) {
+  for (std::uint32_t j = 0; j < rect.height; ++j) {
+    for (std::uint32_t i = 0; i < rect.width; ++i) {
+      const double sx = 2.0 * (i + 0.5) / rect.width - 1.0, sy = 1.0 - 2.0 * (j + 0.5) / rect.height;
+      const double r2 = sx * sx + sy * sy;
+      if (r2 >= 1.0) continue;
+      const double depth = std::sqrt(1.0 - r2);
+      const Dir3 n = top ? Dir3{sx, depth, sy} : Dir3{sx, sy, -depth};
+      put(image, rect.x + i, rect.y + j, display(shade(content, n), exposure, rect.x + i, rect.y + j));
+    }
+  }
+}
+
+std::string number(double v, bool sign) {
+  char text[32];
+  std::snprintf(text, sizeof text, sign ? "%+.3g" : "%.3g", v);
+  return text;
+}
+
+IoStatus load_reference(const std::filesystem::path& path, const ShJsonContent& content,
+                        std::optional<detail::ReferenceIrradiance>& reference) {
+  ImageFile map;
+  if (IoStatus st = read_image_file(path, map); !st.ok()) return st;
+  if (resolve_layout(Layout::Auto, map.width, map.height) != Layout::Equirect) {
+    return IoStatus::error(IoErrc::UnknownLayout, path,
+                           "a " + std::to_string(map.width) + "x" + std::to_string(map.height) +
+                               " image; the reference must be an equirect map (2:1, or 1x1)");
+  }
+  const auto nonfinite = std::count_if(map.pixels.begin(), map.pixels.end(), [](float v) { return !std::isfinite(v); });
+  if (nonfinite > 0) {
+    return IoStatus::error(IoErrc::NonFiniteTexel, path,
+                           std::to_string(nonfinite) + " NaN/Inf values; the reference needs finite radiance");
+  }
+  ImageView view = map.view();
+  if (const Status st = resolve_view(view); !st.ok()) return IoStatus::error(IoErrc::Core, path, st.what);
+  reference.emplace(view, content.intensity, kReferenceCellsW, kReferenceCellsH, kReferenceLevels);
+  return IoStatus::success();
+}
+
+}  // namespace
+
+IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& settings, Rgb8Image& image,
+                        PreviewReport& report) {
+  const std::uint32_t s = settings.size;
+  if (s < 32 || s > 1024) {
+    return IoStatus::error(IoErrc::InvalidArgument, "preview", "the size must be 32..1024 pixels");
+  }
+  std::optional<detail::ReferenceIrradiance> reference;
+  if (!settings.reference.empty()) {
+    if (IoStatus st = load_reference(settings.reference, content, reference); !st.ok()) return st;
+  }
+
+  PreviewReport out;
+  out.mean_luminance = luminance({content.unity_sh[0][0], content.unity_sh[1][0], content.unity_sh[2][0]});
+  out.exposure = out.mean_luminance > 0 ? 1.0 / out.mean_luminance : 1.0;
+
+  // Layout: titles above the panels; the legend (row 1) and the colour bar (row 2) below.
+  const std::uint32_t row1 = kTitleHeight, legend = row1 + s + 2;
+  out.front = {0, row1, s, s};
+  out.top = {s + kMargin, row1, s, s};
+  out.sh = {2 * (s + kMargin), row1, 2 * s, s};
+  std::uint32_t height = legend + kTitleHeight;
+  std::uint32_t row2 = 0;
+  if (reference) {
+    row2 = height + kTitleHeight;
+    out.has_reference = true;
+    out.reference = {0, row2, 2 * s, s};
+    out.error = {2 * s + kMargin, row2, 2 * s, s};
+    out.colour_bar = {out.error.x, row2 + s + 3, 2 * s, 8};
+    height = out.colour_bar.y + out.colour_bar.height + 2 + kTitleHeight;
+  }
+  image.width = std::max(out.sh.x + out.sh.width, out.error.x + out.error.width);
+  image.height = height;
+  image.pixels.assign(std::size_t{image.width} * image.height * 3, 0);
+  detail::fill(image, {0, 0, image.width, image.height}, detail::kBackground);
+
+  draw_sphere(image, out.front, false, content, out.exposure);
+  draw_sphere(image, out.top, true, content, out.exposure);
+  const std::uint32_t pw = 2 * s, ph = s;  // equirect panels
+  double negative_solid = 0;
+  std::vector<double> sh_luminance(std::size_t{pw} * ph);
+  for (std::uint32_t y = 0; y < ph; ++y) {
+    for (std::uint32_t x = 0; x < pw; ++x) {
+      const std::array<double, 3> v = shade(content, panel_direction(x, y, pw, ph));
+      if (v[0] < 0 || v[1] < 0 || v[2] < 0) negative_solid += panel_solid_angle(y, pw, ph);
+      sh_luminance[std::size_t{y} * pw + x] = luminance(v);
+      put(image, out.sh.x + x, out.sh.y + y, display(v, out.exposure, out.sh.x + x, out.sh.y + y));
+    }
+  }
+  out.negative_fraction = negative_solid / (4.0 * std::numbers::pi);
+  detail::draw_text(image, out.front.x, 2, "FRONT (FROM -Z)");
+  detail::draw_text(image, out.top.x, 2, "TOP (FROM +Y)");
+  detail::draw_text(image, out.sh.x, 2, "SHADESH9 = E/PI, CENTRE +X");
+  detail::draw_text(image, 0, legend + 2,
+                    "STRIPES: E/PI < 0 (" + number(100.0 * out.negative_fraction, false) +
+                        "% OF SPHERE). REINHARD, MEAN E/PI " + number(out.mean_luminance, false) + " -> 0.5, SRGB");
+
+  if (reference) {
+    out.cells_w = reference->cells_w();
+    out.cells_h = reference->cells_h();
+    const Matrix3 r = rotation_about_y(content.rotate_deg);
+    std::vector<double> error(std::size_t{pw} * ph);
+    double sum_sq = 0;
+    for (std::uint32_t y = 0; y < ph; ++y) {
+      for (std::uint32_t x = 0; x < pw; ++x) {
+        // The document's environment is the map turned by R: E'(n) = E(R^T n) (rotate.h).
+        const Dir3 n = panel_direction(x, y, pw, ph);
+        const Dir3 v = {r[0][0] * n.x + r[1][0] * n.y + r[2][0] * n.z, r[0][1] * n.x + r[1][1] * n.y + r[2][1] * n.z,
+                        r[0][2] * n.x + r[1][2] * n.y + r[2][2] * n.z};
+        const detail::ReferenceValue ref = reference->eval(v);
+        for (int c = 0; c < 3; ++c) out.reference_bound[c] = std::max(out.reference_bound[c], ref.bound[c]);
+        out.reference_bound_luminance = std::max(out.reference_bound_luminance, luminance(ref.bound));
+        const double e = sh_luminance[std::size_t{y} * pw + x] - luminance(ref.e_over_pi);
+        error[std::size_t{y} * pw + x] = e;
+        out.max_abs_error = std::max(out.max_abs_error, std::fabs(e));
+        sum_sq += e * e * panel_solid_angle(y, pw, ph);
+        put(image, out.reference.x + x, out.reference.y + y,
+            display(ref.e_over_pi, out.exposure, out.reference.x + x, out.reference.y + y));
+      }
+    }
+    out.rms_error = std::sqrt(sum_sq / (4.0 * std::numbers::pi));
+    out.error_scale = out.max_abs_error;
+    const double scale = out.error_scale > 0 ? out.error_scale : 1.0;
+    for (std::uint32_t y = 0; y < ph; ++y)
+      for (std::uint32_t x = 0; x < pw; ++x)
+        put(image, out.error.x + x, out.error.y + y, detail::error_colour(error[std::size_t{y} * pw + x] / scale));
+    const PanelRect& bar = out.colour_bar;
+    for (std::uint32_t x = 0; x < bar.width; ++x) {
+      const Rgb8 colour = detail::error_colour(-1.0 + 2.0 * x / (bar.width - 1));
+      for (std::uint32_t y = 0; y < bar.height; ++y) put(image, bar.x + x, bar.y + y, colour);
+    }
+    const std::uint32_t labels = bar.y + bar.height + 2;
+    const std::string low = number(-out.error_scale, true), high = number(out.error_scale, true);
+    detail::draw_text(image, bar.x, labels, low);
+    detail::draw_text(image, bar.x + (bar.width - detail::text_width("0")) / 2, labels, "0");
+    detail::draw_text(image, bar.x + bar.width - detail::text_width(high), labels, high);
+
+    detail::draw_text(image, out.reference.x, row2 - kTitleHeight + 2, "REFERENCE: BRUTE-FORCE E/PI");
+    detail::draw_text(image, out.error.x, row2 - kTitleHeight + 2, "ERROR: SH - REFERENCE, LUMINANCE");
+    const double bound_percent =
+        out.mean_luminance > 0 ? 100.0 * out.reference_bound_luminance / out.mean_luminance : 0.0;
+    std::string label = settings.reference_label;  // clipped to its panel
+    const std::size_t fits = (out.reference.width + 1) / detail::kGlyphAdvance;
+    if (label.size() > fits) label = label.substr(0, fits - 3) + "...";
+    detail::draw_text(image, out.reference.x, bar.y, label);
+    detail::draw_text(image, out.reference.x, labels,
+                      std::to_string(out.cells_w) + "X" + std::to_string(out.cells_h) + " CELLS, ERROR <= " +
+                          number(bound_percent, false) + "% OF MEAN");
+  }
+  report = out;
+  return IoStatus::success();
+}
+
+}  // namespace shpack::io

@@ -1,0 +1,199 @@
+// c_api.cpp - the C ABI (shpack_c.h) over the core: plain structs in, plain structs out.
+// Every function is noexcept in effect: the core never throws, and the only allocation here
+// (the projector handle) uses nothrow new.
+#include "shpack/shpack_c.h"
+
+#include <new>
+
+#include "shpack/pipeline.h"
+#include "shpack/project.h"
+#include "shpack/unity_pack.h"
+#include "shpack/window.h"
+
+struct shpack_projector {
+  shpack::EquirectProjector projector;
+  shpack::FinishOptions finish;
+  bool finished = false;
+};
+
+namespace {
+
+using shpack::Errc;
+using shpack::Status;
+
+int32_t code_of(Errc code) {
+  switch (code) {
+    case Errc::Ok: return SHPACK_OK;
+    case Errc::InvalidArgument: return SHPACK_INVALID_ARGUMENT;
+    case Errc::BadView: return SHPACK_BAD_VIEW;
+    case Errc::NonFiniteTexel: return SHPACK_NONFINITE_TEXEL;
+    case Errc::BadSequence: return SHPACK_BAD_SEQUENCE;
+    case Errc::OutOfMemory: return SHPACK_OUT_OF_MEMORY;
+    case Errc::OutOfRange: return SHPACK_OUT_OF_RANGE;
+    default: return SHPACK_INTERNAL;
+  }
+}
+
+int32_t report(const Status& st, shpack_error* error) {
+  const int32_t code = code_of(st.code);
+  if (error != nullptr) *error = {code, st.x, st.y, st.face, st.what};
+  return code;
+}
+
+int32_t invalid(const char* what, shpack_error* error) {
+  return report(Status::error(Errc::InvalidArgument, what), error);
+}
+
+// The core's view of a shpack_image (0 strides mean packed).
+Status to_view(const shpack_image& image, shpack::ImageView& view) {
+  if (image.pixel_type != SHPACK_PIXEL_F32 && image.pixel_type != SHPACK_PIXEL_F16)
+    return Status::error(Errc::InvalidArgument, "pixel_type must be SHPACK_PIXEL_F32 or SHPACK_PIXEL_F16");
+  view = {static_cast<const std::byte*>(image.data),
+          image.pixel_type == SHPACK_PIXEL_F32 ? shpack::PixelType::F32 : shpack::PixelType::F16,
+          image.width,
+          image.height,
+          image.channels,
+          image.pixel_stride == 0 ? shpack::kAutoStride : image.pixel_stride,
+          image.row_stride == 0 ? shpack::kAutoStride : image.row_stride};
+  return shpack::resolve_view(view);
+}
+
+Status to_settings(const shpack_options& options, shpack::ProjectOptions& project, shpack::FinishOptions& finish) {
+  if (options.method != SHPACK_METHOD_EXACT && options.method != SHPACK_METHOD_CENTER)
+    return Status::error(Errc::InvalidArgument, "method must be SHPACK_METHOD_EXACT or SHPACK_METHOD_CENTER");
+  if (options.nonfinite != SHPACK_NONFINITE_ERROR && options.nonfinite != SHPACK_NONFINITE_ZERO)
+    return Status::error(Errc::InvalidArgument, "nonfinite must be SHPACK_NONFINITE_ERROR or SHPACK_NONFINITE_ZERO");
+  if (options.negative != SHPACK_NEGATIVE_KEEP && options.negative != SHPACK_NEGATIVE_CLAMP)
+    return Status::error(Errc::InvalidArgument, "negative must be SHPACK_NEGATIVE_KEEP or SHPACK_NEGATIVE_CLAMP");
+  project.method = options.method == SHPACK_METHOD_EXACT ? shpack::Method::Exact : shpack::Method::Center;
+  project.nonfinite = options.nonfinite == SHPACK_NONFINITE_ERROR ? shpack::NonFinite::Error : shpack::NonFinite::Zero;
+  project.negative = options.negative == SHPACK_NEGATIVE_KEEP ? shpack::Negative::Keep : shpack::Negative::Clamp;
+  project.threads = options.threads;
+  finish.intensity = options.intensity;
+  finish.rotate_deg = options.rotate_deg;
+  finish.window = {};
+  if (options.window != nullptr) {
+    if (Status st = shpack::parse_window(options.window, finish.window); !st.ok()) return st;
+  }
+  return Status::success();
+}
+
+// Finishes projected radiance into `result` (left as it was on failure).
+Status finish_into(const shpack::ShL2& radiance, const shpack::ProjectStats& stats,
+                   const shpack::FinishOptions& options, shpack_result& result) {
+  shpack::FinishedSh sh;
+  if (Status st = shpack::finish_projection(radiance, options, sh); !st.ok()) return st;
+  shpack_result out{};
+  const shpack::UnitySphericalHarmonicsL2 unity = shpack::to_unity_sh(sh.unity_form);
+  const shpack::UnityShaderVectors v = shpack::to_shader_vectors(sh.unity_form);
+  const shpack::UnityShaderVectors::Float4* vectors[7] = {&v.SHAr, &v.SHAg, &v.SHAb, &v.SHBr, &v.SHBg, &v.SHBb, &v.SHC};
+  for (int c = 0; c < shpack::kChannelCount; ++c) {
+    for (int i = 0; i < shpack::kShCount; ++i) {
+      out.radiance_sh[9 * c + i] = sh.radiance.c[c][i];
+      out.unity_sh[9 * c + i] = unity[c][i];
+    }
+    out.min_e_over_pi[c] = sh.min_e_over_pi[c].value;
+    out.min_direction[3 * c] = sh.min_e_over_pi[c].direction.x;
+    out.min_direction[3 * c + 1] = sh.min_e_over_pi[c].direction.y;
+    out.min_direction[3 * c + 2] = sh.min_e_over_pi[c].direction.z;
+    for (int l = 0; l < 3; ++l) out.window_factors[3 * c + l] = sh.window.factors[c][l];
+  }
+  for (int k = 0; k < 7; ++k)
+    for (int j = 0; j < 4; ++j) out.shader[4 * k + j] = (*vectors[k])[j];
+  out.nonfinite_texels = stats.nonfinite_texels;
+  out.negative_texels = stats.negative_texels;
+  result = out;
+  return Status::success();
+}
+
+}  // namespace
+
+extern "C" {
+
+int32_t shpack_abi_version(void) { return SHPACK_C_ABI_VERSION; }
+
+const char* shpack_version(void) { return SHPACK_VERSION; }
+
+const char* shpack_status_name(int32_t code) {
+  switch (code) {
+    case SHPACK_OK: return "ok";
+    case SHPACK_INVALID_ARGUMENT: return "invalid_argument";
+    case SHPACK_BAD_VIEW: return "bad_view";
+    case SHPACK_NONFINITE_TEXEL: return "nonfinite_texel";
+    case SHPACK_BAD_SEQUENCE: return "bad_sequence";
+    case SHPACK_OUT_OF_MEMORY: return "out_of_memory";
+    case SHPACK_INTERNAL: return "internal";
+    default: return "unknown";
+  }
+}
+
+void shpack_default_options(shpack_options* options) {
+  if (options != nullptr)
+    *options = {SHPACK_METHOD_EXACT, SHPACK_NONFINITE_ERROR, SHPACK_NEGATIVE_KEEP, 0, 1.0, 0.0, nullptr};
+}
+
+int32_t shpack_convert_equirect(const shpack_image* image, const shpack_options* options, shpack_result* result,
+                                shpack_error* error) {
+  if (image == nullptr || options == nullptr || result == nullptr)
+    return invalid("image, options and result must not be NULL", error);
+  shpack::ProjectOptions project;
+  shpack::FinishOptions finish;
+  if (Status st = to_settings(*options, project, finish); !st.ok()) return report(st, error);
+  shpack::ImageView view;
+  if (Status st = to_view(*image, view); !st.ok()) return report(st, error);
+  shpack::ShL2 radiance;
+  shpack::ProjectStats stats;
+  if (Status st = shpack::project_equirect(view, project, radiance, &stats); !st.ok()) return report(st, error);
+  return report(finish_into(radiance, stats, finish, *result), error);
+}
+
+int32_t shpack_projector_create(uint32_t width, uint32_t height, const shpack_options* options,
+                                shpack_projector** projector, shpack_error* error) {
+  if (options == nullptr || projector == nullptr) return invalid("options and projector must not be NULL", error);
+  *projector = nullptr;
+  shpack::ProjectOptions project;
+  shpack::FinishOptions finish;
+  if (Status st = to_settings(*options, project, finish); !st.ok()) return report(st, error);
+  auto* p = new (std::nothrow) shpack_projector;
+  if (p == nullptr) return report(Status::error(Errc::OutOfMemory, "cannot allocate the projector"), error);
+  p->finish = finish;
+  if (Status st = p->projector.begin(width, height, project); !st.ok()) {
+    delete p;
+    return report(st, error);
+  }
+  *projector = p;
+  return report(Status::success(), error);
+}
+
+int32_t shpack_projector_add_rows(shpack_projector* projector, const shpack_image* rows, uint32_t first_row,
+                                  shpack_error* error) {
+  if (projector == nullptr || rows == nullptr) return invalid("projector and rows must not be NULL", error);
+  shpack::ImageView view;
+  if (Status st = to_view(*rows, view); !st.ok()) return report(st, error);
+  return report(projector->projector.add_rows(view, first_row), error);
+}
+
+int32_t shpack_projector_finish(shpack_projector* projector, shpack_result* result, shpack_error* error) {
+  if (projector == nullptr || result == nullptr) return invalid("projector and result must not be NULL", error);
+  if (projector->finished)
+    return report(Status::error(Errc::BadSequence, "the projector was already finished"), error);
+  shpack::ShL2 radiance;
+  shpack::ProjectStats stats;
+  if (Status st = projector->projector.finish(radiance, &stats); !st.ok()) return report(st, error);
+  projector->finished = true;
+  return report(finish_into(radiance, stats, projector->finish, *result), error);
+}
+
+void shpack_projector_destroy(shpack_projector* projector) { delete projector; }
+
+int32_t shpack_shade_sh9(const float shader[28], float x, float y, float z, float rgb[3]) {
+  if (shader == nullptr || rgb == nullptr) return SHPACK_INVALID_ARGUMENT;
+  shpack::UnityShaderVectors v;
+  shpack::UnityShaderVectors::Float4* vectors[7] = {&v.SHAr, &v.SHAg, &v.SHAb, &v.SHBr, &v.SHBg, &v.SHBb, &v.SHC};
+  for (int k = 0; k < 7; ++k)
+    for (int j = 0; j < 4; ++j) (*vectors[k])[j] = shader[4 * k + j];
+  for (int c = 0; c < 3; ++c) rgb[c] = shpack::shade_sh9(v, c, x, y, z);
+  return SHPACK_OK;
+}
+
+}  // extern "C"

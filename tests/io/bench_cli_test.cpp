@@ -1,0 +1,102 @@
+// `shpack bench`: its JSON is parseable and complete, its errors are one line. Timings are
+// printed, never asserted.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "cli_runner.h"
+#include "io_test_files.h"
+#include "shpack/study/method_sweep.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using shpack_io_test::CliRun;
+using shpack_io_test::run_shpack;
+using shpack_io_test::ScratchDir;
+
+// A 64 x 32 map, smooth with one bright texel: small enough for a quick sweep under ASan.
+fs::path write_tiny_map(const ScratchDir& dir) {
+  std::vector<float> pixels(64 * 32 * 3);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 64; ++x)
+      for (int c = 0; c < 3; ++c) pixels[(y * 64 + x) * 3 + c] = 0.5f + 0.01f * float(x + y + c);
+  pixels[(10 * 64 + 20) * 3] = 1000.0f;
+  const fs::path path = dir / "tiny.exr";
+  EXPECT_TRUE(shpack_io_test::write_image(path, 64, 32, 3, pixels));
+  return path;
+}
+
+TEST(BenchCli, QuickJsonHasOneRecordPerRunWithTheKeys) {
+  const ScratchDir dir;
+  const fs::path map = write_tiny_map(dir);
+  const CliRun run = run_shpack(dir, {"bench", map.string(), "--json", "--quick", "--repeats", "2", "--seed", "7"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json records = nlohmann::json::parse(run.out, nullptr, /*allow_exceptions=*/false);
+  ASSERT_TRUE(records.is_array()) << run.out;
+  const std::vector<shpack::MethodSpec> specs = shpack::study::full_sweep(/*quick=*/true, 7);
+  ASSERT_EQ(records.size(), specs.size());
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const nlohmann::json& r = records[i];
+    for (const char* key : {"input", "method", "param", "seed", "threads", "time_ms_median", "time_ms_min",
+                            "time_ms_max", "err_max_pct", "err_rms_pct", "coef_err_max", "min_e_over_pi"})
+      EXPECT_TRUE(r.contains(key)) << key << " in record " << i;
+    EXPECT_EQ(r["input"], map.string());
+    EXPECT_EQ(r["spec"], std::string(shpack::method_name(specs[i]).view()));
+    EXPECT_EQ(r["seed"].is_null(), !shpack::uses_seed(specs[i].method)) << r["spec"];
+    if (shpack::uses_seed(specs[i].method)) {
+      EXPECT_EQ(r["seed"], 7u);
+    }
+    EXPECT_EQ(r["repeats"], 2);
+    EXPECT_LE(r["time_ms_min"].get<double>(), r["time_ms_median"].get<double>());
+    EXPECT_LE(r["time_ms_median"].get<double>(), r["time_ms_max"].get<double>());
+    EXPECT_GE(r["err_max_pct"].get<double>(), r["err_rms_pct"].get<double>()) << r["spec"];
+    EXPECT_TRUE(std::isfinite(r["min_e_over_pi"].get<double>()));
+  }
+  EXPECT_EQ(records[0]["method"], "exact");
+  EXPECT_EQ(records[0]["err_max_pct"], 0.0);  // the reference measured against itself
+  // Progress: one line per run on stderr, nothing else.
+  EXPECT_EQ(static_cast<std::size_t>(std::count(run.err.begin(), run.err.end(), '\n')), specs.size()) << run.err;
+}
+
+TEST(BenchCli, MarkdownAndPlot) {
+  const ScratchDir dir;
+  const fs::path map = write_tiny_map(dir);
+  const CliRun run = run_shpack(dir, {"bench", map.string(), "synthetic:band-limited", "--methods", "exact,center,fib",
+                                      "--quick", "--repeats", "1", "--plot", (dir / "plot").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("## All 2 inputs\n"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("## Convergence\n"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("\n| fib:1024 | 1024 |"), std::string::npos) << run.out;
+  EXPECT_GT(fs::file_size(dir / "plot.png"), 0u);
+  EXPECT_GT(fs::file_size(dir / "plot.svg"), 0u);
+  for (const auto& entry : fs::directory_iterator(dir.path()))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp."), std::string::npos) << entry.path();
+}
+
+TEST(BenchCli, ErrorsAreOneLine) {
+  const ScratchDir dir;
+  const fs::path missing = dir / "missing.exr";
+  CliRun run = run_shpack(dir, {"bench", missing.string(), "--quick"});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.err, "shpack: " + missing.string() + ": no such file\n");
+
+  run = run_shpack(dir, {"bench", "synthetic:nothing", "--quick"});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.err.rfind("shpack: synthetic:nothing: ", 0), 0u) << run.err;
+
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"bench", "--methods", "mc:0"}, {"bench", "--methods", "fast"}, {"bench", "--methods", "mc,"},
+           {"bench", "--repeats", "0"}, {"bench", "--threads", "-1"}, {"bench", "--seed", "-1"}}) {
+    run = run_shpack(dir, args);
+    EXPECT_EQ(run.exit_code, 2) << args[2] << "\n" << run.err;
+    EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << run.err;
+  }
+}
+
+}  // namespace

@@ -1,0 +1,288 @@
+// The study behind `shpack bench` (bench/study): its error metrics on cases with a known
+// answer, its sweeps and inputs, its fits and reports. No timing is asserted.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "shpack/convolution.h"
+#include "shpack/sh_minimum.h"
+#include "shpack/study/accuracy.h"
+#include "shpack/study/method_sweep.h"
+#include "shpack/study/plot.h"
+#include "shpack/study/study.h"
+#include "shpack/study/study_inputs.h"
+#include "shpack/study/study_report.h"
+
+namespace shpack::study {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// A positive map's radiance: L00 = 2 sqrt(pi) * mean per channel, and small other terms.
+ShL2 reference_radiance() {
+  ShL2 sh;
+  const double means[3] = {1.0, 2.0, 0.5};
+  for (int c = 0; c < kChannelCount; ++c) {
+    sh.c[c][0] = 2 * std::sqrt(std::numbers::pi) * means[c];
+    for (int i = 1; i < kShCount; ++i) sh.c[c][i] = 0.05 * (i % 3 - 1) * (c + 1);
+  }
+  return sh;
+}
+
+TEST(StudyAccuracy, FibonacciNormalsAreUnitAndCoverBothPoles) {
+  const std::vector<Dir3> normals = fibonacci_normals(kAccuracyNormals);
+  ASSERT_EQ(normals.size(), static_cast<std::size_t>(kAccuracyNormals));
+  for (const Dir3& n : normals) EXPECT_NEAR(n.x * n.x + n.y * n.y + n.z * n.z, 1.0, 4 * kEps);
+  EXPECT_DOUBLE_EQ(normals.front().y, 1.0 - 1.0 / kAccuracyNormals);
+  EXPECT_DOUBLE_EQ(normals.back().y, -(1.0 - 1.0 / kAccuracyNormals));
+}
+
+TEST(StudyAccuracy, ExactAgainstItselfHasNoError) {
+  const ShL2 reference = reference_radiance();
+  const AccuracyMetrics m = AccuracyMeter(reference).measure(reference);
+  EXPECT_EQ(m.err_max_pct, 0.0);
+  EXPECT_EQ(m.err_rms_pct, 0.0);
+  EXPECT_EQ(m.coef_err_max, 0.0);
+  const ShL2 unity_form = radiance_to_unity_form(reference);
+  double want_min = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < kChannelCount; ++c) want_min = std::min(want_min, minimum_on_sphere(unity_form, c).value);
+  EXPECT_EQ(m.min_e_over_pi, want_min);
+}
+
+TEST(StudyAccuracy, ConstantOffsetGivesItsShareOfTheMean) {
+  // Adding d to L00 of channel 2 adds C0 d to E/pi everywhere; the channel's mean is C0 L00,
+  // so both errors are d / L00 exactly, and so is the coefficient error.
+  const ShL2 reference = reference_radiance();
+  ShL2 estimate = reference;
+  const double d = 0.01;
+  estimate.c[2][0] += d;
+  const AccuracyMetrics m = AccuracyMeter(reference).measure(estimate);
+  const double want = d / reference.c[2][0];
+  EXPECT_NEAR(m.err_max_pct, 100 * want, 100 * want * 64 * kEps);
+  EXPECT_NEAR(m.err_rms_pct, 100 * want, 100 * want * 64 * kEps);
+  EXPECT_NEAR(m.coef_err_max, want, want * 8 * kEps);
+}
+
+TEST(StudyAccuracy, LinearOffsetFollowsTheFibonacciNormals) {
+  // Adding d to L_1 (P_1 = y) of channel 0 adds C1 d y to E/pi. Over the n Fibonacci
+  // normals, max |y| = 1 - 1/n and mean y^2 = (1/n) sum_k (1 - (2k+1)/n)^2 = 1/3 - 1/(3 n^2).
+  const ShL2 reference = reference_radiance();
+  ShL2 estimate = reference;
+  const double d = 0.02;
+  estimate.c[0][1] += d;
+  const int n = 256;
+  const AccuracyMetrics m = AccuracyMeter(reference, n).measure(estimate);
+  const double mean = kC0 * reference.c[0][0];
+  const double want_max = 100 * kC1 * d * (1 - 1.0 / n) / mean;
+  const double want_rms = 100 * kC1 * d * std::sqrt(1.0 / 3 - 1.0 / (3.0 * n * n)) / mean;
+  EXPECT_NEAR(m.err_max_pct, want_max, want_max * 1e-12);
+  EXPECT_NEAR(m.err_rms_pct, want_rms, want_rms * 1e-12);
+  EXPECT_NEAR(m.coef_err_max, d / reference.c[0][0], 1e-15);
+}
+
+TEST(StudyAccuracy, WorstChannelCountsAndBlackChannelsAreSkipped) {
+  ShL2 reference = reference_radiance();
+  reference.c[1] = {};  // a black channel has no relative error
+  ShL2 estimate = reference;
+  estimate.c[1][0] = 5.0;  // ignored: channel 1 has no mean
+  estimate.c[0][0] += 0.01;
+  estimate.c[2][0] += 0.01;  // channel 2's mean is half of channel 0's: twice the error
+  const AccuracyMetrics m = AccuracyMeter(reference).measure(estimate);
+  EXPECT_NEAR(m.err_max_pct, 100 * 0.01 / reference.c[2][0], 1e-12);
+
+  const AccuracyMetrics black = AccuracyMeter(ShL2{}).measure(estimate);
+  EXPECT_TRUE(std::isnan(black.err_max_pct));
+  EXPECT_TRUE(std::isnan(black.err_rms_pct));
+  EXPECT_TRUE(std::isnan(black.coef_err_max));
+}
+
+TEST(StudySweep, MethodListsExpandNamesAndKeepSpecs) {
+  std::vector<MethodSpec> specs;
+  ASSERT_TRUE(parse_method_list("exact,mc,mip:2,qmc:100:9", /*quick=*/true, 7, specs).ok());
+  ASSERT_EQ(specs.size(), 1u + 3u + 1u + 1u);
+  EXPECT_EQ(specs[0], (MethodSpec{SamplingMethod::Exact, 0, 7}));  // the seed is carried, unused
+  EXPECT_EQ(specs[1], (MethodSpec{SamplingMethod::MonteCarlo, 64, 7}));
+  EXPECT_EQ(specs[3], (MethodSpec{SamplingMethod::MonteCarlo, 16384, 7}));
+  EXPECT_EQ(specs[4].method, SamplingMethod::Mip);
+  EXPECT_EQ(specs[4].param, 2u);
+  EXPECT_EQ(specs[5], (MethodSpec{SamplingMethod::QuasiMonteCarlo, 100, 9}));  // its own seed wins
+
+  const std::vector<MethodSpec> before = specs;
+  for (const char* bad : {"", "mc,", ",mc", "fast", "mc:0", "exact:1"})
+    EXPECT_FALSE(parse_method_list(bad, false, 7, specs).ok()) << bad;
+  EXPECT_EQ(specs, before);  // unchanged on failure
+}
+
+TEST(StudySweep, EveryMethodSpansDecadesOfCost) {
+  for (const bool quick : {false, true}) {
+    const std::vector<MethodSpec> specs = full_sweep(quick, kDefaultMethodSeed);
+    for (const MethodSpec& spec : specs) EXPECT_TRUE(validate_method(spec).ok()) << method_name(spec).c_str();
+    for (const SamplingMethod m : {SamplingMethod::MonteCarlo, SamplingMethod::Riemann, SamplingMethod::Mip}) {
+      const std::vector<MethodSpec> sweep = method_sweep(m, quick, kDefaultMethodSeed);
+      const double cheapest = sample_count(sweep.front(), 1024, 512);
+      const double dearest = sample_count(sweep.back(), 1024, 512);
+      EXPECT_GE(dearest / cheapest, quick ? 100 : 1000) << family_name(m);
+    }
+  }
+  EXPECT_EQ(sample_count({SamplingMethod::CubeExact, 8}, 1024, 512), 6 * 64);
+  EXPECT_EQ(sample_count({SamplingMethod::Mip, 3}, 1024, 512), 128 * 64);
+  EXPECT_EQ(family_name(SamplingMethod::CubeExact), "cube-exact");
+}
+
+TEST(StudyInputs, SyntheticMapsAreEquirectAndPositive) {
+  for (const std::string& name : synthetic_map_names()) {
+    StudyImage image;
+    ASSERT_TRUE(load_study_input(name, image).ok()) << name;
+    EXPECT_EQ(image.name, name);
+    EXPECT_EQ(image.width, kSyntheticWidth);
+    EXPECT_EQ(image.height, kSyntheticWidth / 2);
+    ASSERT_EQ(image.pixels.size(), std::size_t{3} * image.width * image.height);
+    for (const float v : image.pixels) ASSERT_GT(v, 0.0f) << name;
+  }
+  StudyImage image;
+  ASSERT_TRUE(load_study_input("synthetic:texel", image).ok());
+  EXPECT_EQ(*std::max_element(image.pixels.begin(), image.pixels.end()), 1e6f);
+  ASSERT_TRUE(load_study_input("synthetic:sun", image).ok());
+  // The disc (6.7e-5 sr) over texels of (2 pi / 1024)^2 sin(55 deg) = 3.1e-5 sr: its
+  // coverage sums to about two texels' worth.
+  double sun_texels = 0;
+  for (std::size_t i = 0; i < image.pixels.size(); i += 3) sun_texels += image.pixels[i] > 1 ? image.pixels[i] / 1e5 : 0;
+  EXPECT_GT(sun_texels, 1.0);
+  EXPECT_LT(sun_texels, 3.0);
+  EXPECT_EQ(load_study_input("synthetic:nothing", image).code, io::IoErrc::InvalidArgument);
+}
+
+TEST(StudyRun, ExactIsTheReferenceAndEveryRecordIsFilled) {
+  StudyImage image{"tiny", 16, 8, 3, std::vector<float>(16 * 8 * 3, 1.0f)};
+  image.pixels[3 * (3 * 16 + 5)] = 50.0f;
+  const std::vector<MethodSpec> specs = {MethodSpec{}, {SamplingMethod::Center}, {SamplingMethod::Fibonacci, 64}};
+  std::vector<StudyRecord> records;
+  std::size_t calls = 0;
+  ASSERT_TRUE(run_study(image, specs, {3, 1}, records,
+                        [&](const StudyRecord&, std::size_t done, std::size_t total) {
+                          EXPECT_EQ(done, ++calls);
+                          EXPECT_EQ(total, specs.size());
+                        })
+                  .ok());
+  ASSERT_EQ(records.size(), specs.size());
+  EXPECT_EQ(calls, specs.size());
+  EXPECT_EQ(records[0].accuracy.err_max_pct, 0.0);
+  EXPECT_GT(records[2].accuracy.err_max_pct, 0.0);
+  for (const StudyRecord& r : records) {
+    EXPECT_EQ(r.input, "tiny");
+    EXPECT_EQ(r.repeats, 3u);
+    EXPECT_EQ(r.threads, 1u);
+    EXPECT_LE(r.time_ms_min, r.time_ms_median);
+    EXPECT_LE(r.time_ms_median, r.time_ms_max);
+  }
+  EXPECT_EQ(run_study(image, specs, {0, 1}, records).code, io::IoErrc::InvalidArgument);
+}
+
+// Records whose error falls exactly as samples^-1/2 (Monte Carlo) and samples^-1 (a grid).
+std::vector<StudyRecord> power_law_records() {
+  std::vector<StudyRecord> records;
+  for (const double n : {64.0, 256.0, 1024.0, 4096.0}) {
+    StudyRecord mc;
+    mc.input = "a";
+    mc.spec = {SamplingMethod::MonteCarlo, static_cast<std::uint32_t>(n)};
+    mc.samples = n;
+    mc.time_ms_median = n * 1e-4;
+    mc.accuracy.err_max_pct = 300 / std::sqrt(n);
+    mc.accuracy.err_rms_pct = 100 / std::sqrt(n);
+    StudyRecord grid = mc;
+    grid.spec = {SamplingMethod::Riemann, static_cast<std::uint32_t>(n)};
+    grid.accuracy.err_max_pct = 3000 / n;
+    grid.accuracy.err_rms_pct = 1000 / n;
+    records.push_back(mc);
+    records.push_back(grid);
+  }
+  return records;
+}
+
+TEST(StudyReport, ConvergenceSlopesRecoverPowerLaws) {
+  const std::vector<ConvergenceFit> fits = convergence_fits(power_law_records());
+  ASSERT_EQ(fits.size(), 2u);
+  EXPECT_EQ(fits[0].method, SamplingMethod::MonteCarlo);
+  EXPECT_NEAR(fits[0].slope, -0.5, 1e-12);
+  EXPECT_EQ(fits[0].points, 4);
+  EXPECT_EQ(fits[1].method, SamplingMethod::Riemann);
+  EXPECT_NEAR(fits[1].slope, -1.0, 1e-12);
+}
+
+TEST(StudyReport, SummaryTakesTheWorstAndTheMedianInput) {
+  std::vector<StudyRecord> records;
+  for (const auto& [input, time, err] : {std::tuple{"a", 1.0, 2.0}, {"b", 3.0, 8.0}, {"c", 2.0, 4.0}}) {
+    StudyRecord r;
+    r.input = input;
+    r.spec = {SamplingMethod::Fibonacci, 64};
+    r.time_ms_median = time;
+    r.accuracy.err_max_pct = err;
+    r.accuracy.err_rms_pct = err / 2;
+    records.push_back(r);
+  }
+  const std::vector<SpecSummary> summary = summarize(records);
+  ASSERT_EQ(summary.size(), 1u);
+  EXPECT_EQ(summary[0].inputs, 3);
+  EXPECT_EQ(summary[0].time_ms, 2.0);
+  EXPECT_EQ(summary[0].err_max_pct, 8.0);
+  EXPECT_EQ(summary[0].err_rms_pct, 2.0);
+}
+
+TEST(StudyReport, JsonWritesEveryKeyAndNaNAsNull) {
+  std::vector<StudyRecord> records = power_law_records();
+  records[0].accuracy.err_max_pct = std::numeric_limits<double>::quiet_NaN();
+  const nlohmann::json j = nlohmann::json::parse(json_report(records));
+  ASSERT_EQ(j.size(), records.size());
+  EXPECT_TRUE(j[0]["err_max_pct"].is_null());
+  EXPECT_EQ(j[0]["method"], "mc");
+  EXPECT_EQ(j[0]["param"], 64);
+  EXPECT_EQ(j[0]["seed"], kDefaultMethodSeed);
+  EXPECT_TRUE(j[1]["seed"].is_null());  // riemann takes no seed
+}
+
+TEST(StudyReport, PlotScriptDrawsEachMethodTheFrontAndExact) {
+  std::vector<StudyRecord> records = power_law_records();
+  StudyRecord exact;
+  exact.input = "a";
+  exact.time_ms_median = 0.2;
+  records.push_back(exact);
+  const std::string gp = plot_script(records, "it's.png", "out.svg");
+  EXPECT_NE(gp.find("set output 'it''s.png'"), std::string::npos) << gp;  // gnuplot's quote escape
+  EXPECT_NE(gp.find("set output 'out.svg'"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("title 'mc'"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("title 'riemann'"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("title 'Pareto front'"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("'exact (error 0)'"), std::string::npos) << gp;
+}
+
+TEST(StudyReport, ParetoFrontKeepsOnlyWhatNoFasterSpecBeats) {
+  // (time, error): B and C lose to the faster A; D beats A; exact (time 10) ends the front.
+  std::vector<StudyRecord> records;
+  const std::tuple<std::uint32_t, double, double> points[] = {{64, 1, 10}, {128, 2, 20}, {256, 3, 15}, {512, 4, 5}};
+  for (const auto& [n, time, err] : points) {
+    StudyRecord r;
+    r.input = "a";
+    r.spec = {SamplingMethod::Fibonacci, n};
+    r.samples = n;
+    r.time_ms_median = time;
+    r.accuracy.err_max_pct = err;
+    records.push_back(r);
+  }
+  StudyRecord exact;
+  exact.input = "a";
+  exact.time_ms_median = 10;
+  records.push_back(exact);
+  const std::string gp = plot_script(records, "a.png", "a.svg");
+  EXPECT_NE(gp.find("$front << EOD\n1 10\n4 5\n10 5\nEOD\n"), std::string::npos) << gp;
+}
+
+}  // namespace
+}  // namespace shpack::study
