@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# The whole `shpack convert` process on a 4096x2048 float EXR against a process that only
-# decodes the same file with OpenImageIO (bench/decode_only.cpp): issue 6 asks for at most
-# 1.15x. The map is data/hdri/courtyard.exr resized by oiiotool, stored as 32-bit float with
-# ZIP compression (OpenEXR's usual lossless choice), so it has real content.
+# The whole `shpack convert` process on a W x W/2 float EXR against a process that only
+# decodes the same file with OpenImageIO into one buffer (bench/decode_only.cpp): issue 6
+# asks for at most 1.15x at 4096x2048, issue 5 for "no slower than reading the whole image"
+# at 16384x8192 (where convert streams in bands and the decoder holds 1.5 GiB). The map is
+# data/hdri/courtyard.exr resized by oiiotool, stored as 32-bit float with ZIP compression
+# (OpenEXR's usual lossless choice), so it has real content.
 #
-#   bench/convert_vs_decode.sh [BUILD_DIR] [RUNS]     defaults: build, 21
+#   bench/convert_vs_decode.sh [BUILD_DIR] [RUNS] [W]     defaults: build, 21, 4096
 #
 # Runs alternate between the two commands (which goes first flips each round, so a slow
 # spell of the shared machine hits both), each timed as a wall-clock interval around the
@@ -14,6 +16,8 @@ set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-build}
 runs=${2:-21}
+width=${3:-4096}
+height=$((width / 2))
 shpack=$build/cli/shpack
 decode=$build/bench/shpack_decode_only
 for tool in "$shpack" "$decode"; do
@@ -24,7 +28,7 @@ command -v oiiotool >/dev/null || { echo "convert_vs_decode: oiiotool: not insta
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 map=$work/map.exr
-oiiotool "$repo/data/hdri/courtyard.exr" --resize 4096x2048 -d float --compression zip -o "$map"
+oiiotool "$repo/data/hdri/courtyard.exr" --resize ${width}x${height} -d float --compression zip -o "$map"
 
 run_decode() { "$decode" "$map"; }
 run_convert() { "$shpack" convert "$map" -o "$work/out.json"; }
@@ -49,7 +53,7 @@ done
 median() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 d=$(median "${decode_ms[@]}")
 c=$(median "${convert_ms[@]}")
-echo "map: 4096x2048 float RGB EXR (ZIP), $(du -h "$map" | cut -f1); $runs interleaved runs each"
+echo "map: ${width}x${height} float RGB EXR (ZIP), $(du -h "$map" | cut -f1); $runs interleaved runs each"
 echo "decode only (OpenImageIO read_image):  median $d ms"
 echo "shpack convert (whole process):        median $c ms"
 awk -v c="$c" -v d="$d" 'BEGIN { printf "ratio convert / decode: %.3f\n", c / d }'

@@ -31,37 +31,48 @@ double angle_between(const Dir3& a, const Dir3& b) {
 // Accumulates one texel: weighted values of f, the solid angle and the first moment.
 struct Accumulator {
   const AnalyticEnvironment& f;
-  long double sum[3] = {}, omega = 0, moment[3] = {};
+  long double sum[3] = {}, omega = 0, moment[3] = {}, cover = 0;
 
   void add(const Dir3& d, long double w) {
     const std::array<double, 3> v = f(d);
     for (int c = 0; c < 3; ++c) sum[c] += w * v[c];
     omega += w;
+    if (f.in_cap(d)) cover += w;
     moment[0] += w * d.x, moment[1] += w * d.y, moment[2] += w * d.z;
   }
   Texel texel(double diameter) const {
     Texel t;
     for (int c = 0; c < 3; ++c) t.average[c] = omega > 0 ? static_cast<double>(sum[c] / omega) : 0.0;
     t.solid_angle = static_cast<double>(omega);
+    t.cap_cover = omega > 0 ? static_cast<double>(cover / omega) : 0.0;
     t.diameter = diameter;
     t.direction = unit(static_cast<double>(moment[0]), static_cast<double>(moment[1]), static_cast<double>(moment[2]));
     return t;
   }
 };
 
-// The rule for one texel. Away from the lobe, f is the band-limited part (a quadratic in d)
-// plus a lobe below 100 exp(-kappa (1 - cos kNear)) = 2e-9: one cell of 6 x 6 nodes. Within
+// The rule for one texel. Away from the lobe and the cap's edge, f is the band-limited part
+// (a quadratic in d) plus a constant (the cap, or none) plus a lobe below
+// 100 exp(-kappa (1 - cos kNear)) = 2e-9: one cell of 6 x 6 nodes. Within
 // kNear of the lobe (8 of its widths), cells of at most kCell radians (one lobe width) of
-// 8 x 8 nodes. `fine` doubles the cells: the second density that measures the rule's error
-// (projection_tolerance's caller adds the difference).
+// 8 x 8 nodes. Where the cap's edge may cross the texel, cells of at most half the cap's
+// radius (up to 32 x 32 cells), so that the rendered disc is close to round: the tolerance
+// does not rely on it (layout_render.h), but the measured error is then mostly the
+// projection's, not the rendering's. `fine` doubles the cells: the second density that
+// measures the rule's error on the smooth part (projection_tolerance's caller adds the
+// difference).
 constexpr double kNear = 0.4, kCell = 0.05;
 struct Rule {
   int sub, q;
 };
+int cells(double diameter, double cell, int most) {
+  return std::clamp(static_cast<int>(std::ceil(diameter / cell)), 1, most);
+}
 Rule rule_for(const AnalyticEnvironment& f, const Dir3& centre, double diameter, bool fine) {
   const bool near = angle_between(centre, f.axis) - diameter < kNear;
-  const int sub = near ? std::clamp(static_cast<int>(std::ceil(diameter / kCell)), 1, 16) : 1;
-  const int q = near ? 8 : 6;
+  const bool edge = std::fabs(angle_between(centre, f.cap_axis) - f.cap_radius) <= diameter;
+  const int sub = std::max(near ? cells(diameter, kCell, 16) : 1, edge ? cells(diameter, 0.5 * f.cap_radius, 32) : 1);
+  const int q = near || edge ? 8 : 6;
   return fine ? Rule{2 * sub, q} : Rule{sub, q};
 }
 
@@ -110,18 +121,27 @@ std::array<double, 3> AnalyticEnvironment::operator()(const Dir3& d) const {
   for (int c = 0; c < 3; ++c) {
     for (int i = 0; i < 9; ++i) out[c] += band_limited.c[c][i] * y[i];
     out[c] += lobe[c] * lobe_shape;
+    if (in_cap(d)) out[c] += cap[c];
   }
   return out;
+}
+
+bool AnalyticEnvironment::in_cap(const Dir3& d) const {
+  return cap_axis.x * d.x + cap_axis.y * d.y + cap_axis.z * d.z >= std::cos(cap_radius);
 }
 
 shpack::ShL2 AnalyticEnvironment::exact() const {
   const double k = kappa, e = std::exp(-2.0 * k);
   const double lambda[3] = {2 * kPi * (1 - e) / k, 2 * kPi * (1 / k - 1 / (k * k) + e * (1 / k + 1 / (k * k))),
                             2 * kPi * (1 / k - 3 / (k * k) + 3 / (k * k * k) - e * (1 / k + 3 / (k * k) + 3 / (k * k * k)))};
+  const double s = std::sin(cap_radius), h = std::sin(0.5 * cap_radius);
+  const double mu[3] = {4 * kPi * h * h, kPi * s * s, kPi * std::cos(cap_radius) * s * s};
   const std::array<double, 9> y = shpack_test::unity_basis_slow(axis.x, axis.y, axis.z);
+  const std::array<double, 9> y_cap = shpack_test::unity_basis_slow(cap_axis.x, cap_axis.y, cap_axis.z);
   shpack::ShL2 out = band_limited;
   for (int c = 0; c < 3; ++c)
-    for (int i = 0; i < 9; ++i) out.c[c][i] += lobe[c] * lambda[shpack::kBand[i]] * y[i];
+    for (int i = 0; i < 9; ++i)
+      out.c[c][i] += lobe[c] * lambda[shpack::kBand[i]] * y[i] + cap[c] * mu[shpack::kBand[i]] * y_cap[i];
   return out;
 }
 
@@ -150,6 +170,9 @@ AnalyticEnvironment make_environment(std::uint64_t seed) {
   f.axis = unit(0.3, 0.5, 0.8);
   f.kappa = 400.0;
   f.lobe = {100.0, 80.0, 60.0};
+  f.cap_axis = unit(-0.6, 0.2, -0.7);
+  f.cap_radius = 3.0 * kPi / 180.0;
+  f.cap = {40.0, 50.0, 60.0};
   return f;
 }
 
@@ -266,10 +289,22 @@ Rendering render_sphere_map(shpack::SphereMap map, std::uint32_t n, const Analyt
   return r;
 }
 
+bool cut_by_cap_edge(const Texel& t, const AnalyticEnvironment& f) {
+  return std::fabs(angle_between(t.direction, f.cap_axis) - f.cap_radius) <= t.diameter;
+}
+
+double cut_solid_angle(const std::vector<Texel>& texels, const AnalyticEnvironment& f) {
+  double omega = 0;
+  for (const Texel& t : texels)
+    if (cut_by_cap_edge(t, f)) omega += t.solid_angle;
+  return omega;
+}
+
 double projection_tolerance(const std::vector<Texel>& texels, const AnalyticEnvironment& f, int channel, int i) {
   const int l = shpack::kBand[i];
   const double g_l = std::sqrt(l * (l + 1.0) * (2 * l + 1.0) / (4 * kPi));
   const double max_y = std::sqrt(5.0 / (4 * kPi));
+  const double cap_edge = std::fabs(f.cap[channel]) * max_y * cut_solid_angle(texels, f);
   double discretisation = 0, rounding = 0;
   for (const Texel& t : texels) {
     const double from_axis = angle_between(t.direction, f.axis);
@@ -277,7 +312,7 @@ double projection_tolerance(const std::vector<Texel>& texels, const AnalyticEnvi
     discretisation += t.solid_angle * t.diameter * t.diameter * g_f * g_l;
     rounding += 0x1p-24 * std::fabs(t.average[channel]) * t.solid_angle * max_y;
   }
-  return discretisation + rounding;
+  return discretisation + cap_edge + rounding;
 }
 
 }  // namespace shpack_layout_test

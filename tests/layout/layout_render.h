@@ -6,9 +6,9 @@
 // lobe of angular width ~1/sqrt(kappa) about the axis a) and a small bright disc (a spherical
 // cap of constant radiance K_c and angular radius r about the axis s, hard-edged like a sun).
 // Its radiance coefficients have a closed form. Both the lobe and the cap are zonal, h(a.d),
-// and the Funk-Hecke theorem gives int h(a.d) Y_lm(d) dw = lambda_l Y_lm(a) with
-// lambda_l = 2 pi int_-1^1 h(t) P_l(t) dt (Y the real, orthonormal basis of sh_basis.h, for
-// which the theorem holds as for the complex one: each Y_lm is a combination of Y_l,+-m).
+// and the Funk-Hecke theorem gives, for every spherical harmonic Y of degree l (so for each
+// real Y_lm of sh_basis.h), int h(a.d) Y(d) dw = lambda_l Y(a) with
+// lambda_l = 2 pi int_-1^1 h(t) P_l(t) dt.
 // The coefficients are b_c,i + L_c lambda_l Y_i(a) + K_c mu_l Y_i(s). For the lobe,
 //   lambda_0 = 2 pi (1 - e) / kappa,                       e = exp(-2 kappa)
 //   lambda_1 = 2 pi (1/kappa - 1/kappa^2 + e (1/kappa + 1/kappa^2))
@@ -33,8 +33,8 @@
 // G_l = sqrt(l (l + 1) (2l + 1) / (4 pi)) >= |grad Y_lm| (the addition theorem for gradients:
 // sum_m |grad Y_lm|^2 = l (l + 1) (2l + 1) / (4 pi)). Rounding the averages to float adds at
 // most 2^-24 sum_t |f_t| Omega_t max|Y_i|, max|Y_i| <= sqrt(5 / (4 pi)).
-// That gradient bound is for the smooth part. The cap's step is instead bounded texel by
-// texel: a texel the cap's edge does not cross holds the cap exactly (every quadrature node
+// That gradient bound is for the smooth part (band-limited and lobe); the projection is
+// linear, so the cap's error adds to it, and the cap's step is bounded texel by texel: a texel the cap's edge does not cross holds the cap exactly (every quadrature node
 // of it sees the same constant, 0 or K_c), so it adds no error; on a texel the edge crosses,
 // the stored cap value is a weighted mean of 0 and K_c (positive weights), so it differs from
 // the cap by at most K_c everywhere on the texel, and its error is at most
@@ -75,7 +75,7 @@ struct AnalyticEnvironment {
 
 // A random band-limited part (support/band_limited.h), a lobe of kappa = 400 (width
 // ~3 degrees) that is 40 times brighter than the mean, about a fixed, asymmetric axis, and a
-// disc of radius 3 degrees, 20 times brighter than the mean, about another.
+// hard-edged disc of radius 3 degrees, about 20 times brighter than the mean, about another.
 AnalyticEnvironment make_environment(std::uint64_t seed);
 
 struct Texel {
