@@ -9,8 +9,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 ./scripts/install-deps.sh
-# -g1: line tables for the sanitizers' reports without full debug info, which would double
-# the build and link slower (CI should stay under 15 minutes on two cores).
+# -g1: line tables for the sanitizers' reports, without the full debug info that makes the
+# build and link slower (CI should stay under 15 minutes on two cores).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
   -DSHPACK_WERROR=ON -DSHPACK_SANITIZE=ON
 cmake --build build-asan -j"$(nproc)"

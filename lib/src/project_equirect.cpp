@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <atomic>
 #include <new>
 #include <thread>
 #include <vector>
@@ -7,6 +6,7 @@
 #include "accumulate.h"
 #include "equirect_weights.h"
 #include "row_kernel.h"
+#include "work_queue.h"
 #include "shpack/project.h"
 
 namespace shpack {
@@ -88,27 +88,13 @@ struct EquirectProjector::State {
     }
   }
 
-  // Runs the band's segments on up to `workers` threads; each segment belongs to a different
-  // tile, so workers never share a Tile. If a thread cannot be started, the threads
-  // that did start (and the caller) drain the queue: the result is the same.
+  // Runs the band's segments on up to `workers` threads (work_queue.h); each segment
+  // belongs to a different tile, so workers never share a Tile.
   void run_band(const ImageView& rows, std::uint32_t first_row) noexcept {
     const std::uint32_t end = first_row + rows.height;
-    const std::uint32_t count = band_segment_count(first_row, end);
-    std::atomic<std::uint32_t> next{0};
-    auto drain = [&](unsigned worker) noexcept {
-      for (std::uint32_t k; (k = next.fetch_add(1)) < count;)
-        run_segment(rows, first_row, band_segment(first_row, end, k), worker);
-    };
-    const unsigned extra = std::min(workers, count) - 1;
-    std::vector<std::thread> threads;
-    try {
-      threads.reserve(extra);
-      for (unsigned w = 1; w <= extra; ++w) threads.emplace_back(drain, w);
-    } catch (...) {
-      // Fewer workers than asked for; the queue is still drained below.
-    }
-    drain(0);
-    for (std::thread& t : threads) t.join();
+    detail::run_queue(band_segment_count(first_row, end), workers, [&](std::uint32_t k, unsigned worker) noexcept {
+      run_segment(rows, first_row, band_segment(first_row, end, k), worker);
+    });
   }
 };
 

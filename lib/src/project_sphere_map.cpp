@@ -1,7 +1,6 @@
 #include "shpack/project_sphere_map.h"
 
 #include <algorithm>
-#include <atomic>
 #include <new>
 #include <span>
 #include <thread>
@@ -9,6 +8,7 @@
 
 #include "accumulate.h"
 #include "row_kernel.h"
+#include "work_queue.h"
 #include "sphere_map_texels.h"
 
 namespace shpack {
@@ -76,23 +76,10 @@ struct Job {
     }
   }
 
-  // Tiles on up to `workers` threads, each tile written by one worker; if a thread cannot
-  // be started, the others (and the caller) drain the queue: the result is the same.
+  // Tiles on up to `workers` threads (work_queue.h), each tile written by one worker.
   void run(unsigned workers) noexcept {
-    const auto count = static_cast<std::uint32_t>(tiles.size());
-    std::atomic<std::uint32_t> next{0};
-    auto drain = [&](unsigned worker) noexcept {
-      for (std::uint32_t t; (t = next.fetch_add(1)) < count;) run_tile(t, worker);
-    };
-    std::vector<std::thread> threads;
-    try {
-      threads.reserve(workers - 1);
-      for (unsigned w = 1; w < workers; ++w) threads.emplace_back(drain, w);
-    } catch (...) {
-      // Fewer workers than asked for; the queue is still drained below.
-    }
-    drain(0);
-    for (std::thread& th : threads) th.join();
+    detail::run_queue(static_cast<std::uint32_t>(tiles.size()), workers,
+                      [&](std::uint32_t t, unsigned worker) noexcept { run_tile(t, worker); });
   }
 };
 

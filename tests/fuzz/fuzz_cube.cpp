@@ -14,19 +14,11 @@
 #include <vector>
 
 #include "shpack/project_cube.h"
+#include "fuzz_reader.h"
 
 namespace {
 
-struct Reader {
-  const std::uint8_t* data;
-  std::size_t size;
-  std::uint32_t take(std::uint32_t modulo) {
-    std::uint32_t v = 0;
-    for (int k = 0; k < 2 && size > 0; ++k, ++data, --size) v = (v << 8) | *data;
-    return modulo == 0 ? v : v % modulo;
-  }
-  std::uint32_t take32() { return take(0) << 16 | take(0); }
-};
+using shpack_fuzz::Reader;
 
 void fuzz_texel_integrals(Reader& in) {
   const std::uint32_t size = in.take32(), x = in.take32(), y = in.take32(), face = in.take(8);

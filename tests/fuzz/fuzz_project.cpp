@@ -14,25 +14,11 @@
 #include <vector>
 
 #include "shpack/project.h"
+#include "fuzz_reader.h"
 
 namespace {
 
-struct Reader {
-  const std::uint8_t* data;
-  std::size_t size;
-  std::uint32_t take(std::uint32_t modulo) {
-    std::uint32_t v = 0;
-    for (int k = 0; k < 2 && size > 0; ++k, ++data, --size) v = (v << 8) | *data;
-    return modulo == 0 ? v : v % modulo;
-  }
-  std::int64_t take64() {
-    std::uint64_t v = 0;
-    for (int k = 0; k < 8 && size > 0; ++k, ++data, --size) v = (v << 8) | *data;
-    std::int64_t s;
-    std::memcpy(&s, &v, sizeof s);
-    return s;
-  }
-};
+using shpack_fuzz::Reader;
 
 // resolve_view on any strides and sizes: it only validates (no pixel is read), so the data
 // pointer need not cover the view. It must not overflow while checking.

@@ -1,6 +1,7 @@
 // cli_runner.h - runs the built shpack command with its output captured, for CLI tests.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -14,7 +15,12 @@ struct CliRun {
 };
 
 // Runs `shpack <args>` (each argument single-quoted for the shell) with stdout and stderr
-// captured in files of `dir`, which are removed afterwards.
-CliRun run_shpack(const ScratchDir& dir, const std::vector<std::string>& args);
+// captured in files of `dir`, which are removed afterwards, and stdin a pipe from
+// `stdin_file` if one is given.
+CliRun run_shpack(const ScratchDir& dir, const std::vector<std::string>& args,
+                  const std::filesystem::path& stdin_file = {});
+
+// The whole file as a string.
+std::string text_of(const std::filesystem::path& path);
 
 }  // namespace shpack_io_test

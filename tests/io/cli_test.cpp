@@ -4,10 +4,9 @@
 #include <nlohmann/json.hpp>
 
 #include <charconv>
-#include <cstdlib>
 #include <string>
-#include <sys/wait.h>
 
+#include "cli_runner.h"
 #include "io_test_files.h"
 #include "shpack/io/json_reader.h"
 #include "shpack/unity_pack.h"
@@ -17,33 +16,13 @@ namespace {
 namespace fs = std::filesystem;
 using shpack_io_test::hdri;
 using shpack_io_test::read_bytes;
+using shpack_io_test::CliRun;
 using shpack_io_test::ScratchDir;
+using shpack_io_test::text_of;
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-std::string text_of(const fs::path& path) {
-  const std::vector<char> bytes = read_bytes(path);
-  return {bytes.begin(), bytes.end()};
-}
-
-// Runs `shpack <args>` (each argument single-quoted for the shell) with stdout and
-// stderr captured in files of `dir`, and stdin a pipe from `stdin_file` if one is given.
+// `shpack <args>`, stdin from `stdin_file` if given (cli_runner.h).
 CliRun shpack(const ScratchDir& dir, const std::vector<std::string>& args, const fs::path& stdin_file = {}) {
-  std::string command = std::string("'") + SHPACK_CLI_PATH + "'";
-  if (!stdin_file.empty()) command = "cat '" + stdin_file.string() + "' | " + command;
-  for (const std::string& a : args) command += " '" + a + "'";
-  command += " >'" + (dir / "stdout.txt").string() + "' 2>'" + (dir / "stderr.txt").string() + "'";
-  const int status = std::system(command.c_str());
-  CliRun run;
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = text_of(dir / "stdout.txt");
-  run.err = text_of(dir / "stderr.txt");
-  fs::remove(dir / "stdout.txt");
-  fs::remove(dir / "stderr.txt");
-  return run;
+  return shpack_io_test::run_shpack(dir, args, stdin_file);
 }
 
 std::string shortest(float v) {
