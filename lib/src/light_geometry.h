@@ -5,20 +5,10 @@
 #include <cmath>
 
 #include "shpack/lights.h"
+#include "shpack/vec3.h"
 
 namespace shpack::detail {
 
-struct Vec3 {
-  double x = 0, y = 0, z = 0;
-};
-
-constexpr Vec3 operator+(Vec3 a, Vec3 b) noexcept { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-constexpr Vec3 operator-(Vec3 a, Vec3 b) noexcept { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-constexpr Vec3 operator*(double s, Vec3 a) noexcept { return {s * a.x, s * a.y, s * a.z}; }
-constexpr double dot(Vec3 a, Vec3 b) noexcept { return a.x * b.x + a.y * b.y + a.z * b.z; }
-constexpr Vec3 cross(Vec3 a, Vec3 b) noexcept {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
 inline double length(Vec3 a) noexcept { return std::hypot(a.x, a.y, a.z); }
 constexpr Vec3 vec(Point3 p) noexcept { return {p.x, p.y, p.z}; }
 constexpr Vec3 vec(Dir3 d) noexcept { return {d.x, d.y, d.z}; }

@@ -9,7 +9,6 @@
 namespace shpack {
 namespace {
 
-using detail::Vec3;
 constexpr double kPi = std::numbers::pi;
 
 // A cap about d with irradiance E at normal incidence and cos a = cos_a: the delta's

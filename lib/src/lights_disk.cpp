@@ -10,7 +10,6 @@
 namespace shpack {
 namespace {
 
-using detail::Vec3;
 constexpr double kPi = std::numbers::pi;
 
 // Two unit vectors completing n to a right-handed orthonormal basis (e1 x e2 = n), without
@@ -51,7 +50,7 @@ Status add_disk_light(const DiskLight& disk, const Rgb& radiance, Point3 probe, 
   const Vec3 to_centre = detail::vec(disk.centre) - detail::vec(probe);
   if (!detail::finite(to_centre))
     return Status::error(Errc::InvalidArgument, "disk light: centre and probe must be finite");
-  const double h = -detail::dot(to_centre, n);  // probe's height over the plane
+  const double h = -dot(to_centre, n);  // probe's height over the plane
   if (quadrature) *quadrature = {};
   if (!(h > 0)) return Status::success();  // behind or in its plane
   Vec3 e1, e2;
@@ -78,9 +77,9 @@ Status add_disk_light(const DiskLight& disk, const Rgb& radiance, Point3 probe, 
     const Vec3 e = ct * e1 + st * e2;
     const Vec3 x = to_centre + radius * e;       // X(t) = B(t) - probe
     const Vec3 dx = radius * (ct * e2 - st * e1);  // X'(t)
-    const double len2 = detail::dot(x, x), len = std::sqrt(len2);
-    const Vec3 xdx = detail::cross(x, dx);
-    const double omega = (radius * radius + radius * detail::dot(q, e)) / (len * (len + h));
+    const double len2 = dot(x, x), len = std::sqrt(len2);
+    const Vec3 xdx = cross(x, dx);
+    const double omega = (radius * radius + radius * dot(q, e)) / (len * (len + h));
     const Vec3 first = (-0.5 / len2) * xdx;
     const double xx[3] = {x.x, x.y, x.z}, cc[3] = {xdx.x, xdx.y, xdx.z};
     const double inv_len3 = 1.0 / (len2 * len);

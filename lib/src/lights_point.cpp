@@ -8,7 +8,7 @@
 namespace shpack {
 
 Status add_point_light(Point3 position, const Rgb& intensity, Point3 probe, ShL2& radiance) noexcept {
-  const detail::Vec3 to_light = detail::vec(position) - detail::vec(probe);
+  const Vec3 to_light = detail::vec(position) - detail::vec(probe);
   if (!detail::finite(to_light))
     return Status::error(Errc::InvalidArgument, "point light: position and probe must be finite");
   if (!detail::valid_colour(intensity))
@@ -34,7 +34,7 @@ double spot_falloff(const SpotLight& spot, double cos_t) noexcept {
 
 Status add_spot_light(const SpotLight& spot, const Rgb& intensity, Point3 probe,
                       ShL2& radiance) noexcept {
-  detail::Vec3 axis;
+  Vec3 axis;
   if (!detail::normalised(detail::vec(spot.axis), axis))
     return Status::error(Errc::InvalidArgument, "spot light: axis must be finite and non-zero");
   if (!(spot.inner_angle >= 0 && spot.inner_angle <= spot.outer_angle &&
@@ -42,14 +42,14 @@ Status add_spot_light(const SpotLight& spot, const Rgb& intensity, Point3 probe,
     return Status::error(Errc::InvalidArgument, "spot light: need 0 <= inner angle <= outer angle <= pi");
   if (!detail::valid_colour(intensity))
     return Status::error(Errc::InvalidArgument, "spot light: intensity must be finite and >= 0");
-  const detail::Vec3 to_light = detail::vec(spot.position) - detail::vec(probe);
+  const Vec3 to_light = detail::vec(spot.position) - detail::vec(probe);
   if (!detail::finite(to_light))
     return Status::error(Errc::InvalidArgument, "spot light: position and probe must be finite");
   const double r = detail::length(to_light);
   if (!(r > 0)) return Status::error(Errc::ProbeInsideLight, "probe at the spot light's position");
-  const detail::Vec3 d = (1.0 / r) * to_light;
+  const Vec3 d = (1.0 / r) * to_light;
   // t is the angle between the axis and the direction from the light to the probe, -d.
-  const double e = spot_falloff(spot, -detail::dot(axis, d)) / (r * r);
+  const double e = spot_falloff(spot, -dot(axis, d)) / (r * r);
   detail::add_zonal(d, {intensity[0] * e, intensity[1] * e, intensity[2] * e}, {1.0, 1.0, 1.0}, radiance);
   return Status::success();
 }

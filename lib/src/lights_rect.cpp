@@ -9,8 +9,6 @@
 namespace shpack {
 namespace {
 
-using detail::Vec3;
-
 // Solid angle of the spherical triangle (a, b, c), given by unnormalised vectors from the
 // probe with lengths la, lb, lc, positive for a counterclockwise (left-hand-region) order [3]:
 //   tan(Omega/2) = [a b c] / (la lb lc + (a.b) lc + (a.c) lb + (b.c) la).
@@ -18,8 +16,8 @@ using detail::Vec3;
 // a small, distant triangle keeps its relative accuracy.
 double triangle_solid_angle(Vec3 a, Vec3 b, Vec3 c, Vec3 eb, Vec3 ec) noexcept {
   const double la = detail::length(a), lb = detail::length(b), lc = detail::length(c);
-  const double triple = detail::dot(a, detail::cross(eb, ec));
-  const double denom = la * lb * lc + detail::dot(a, b) * lc + detail::dot(a, c) * lb + detail::dot(b, c) * la;
+  const double triple = dot(a, cross(eb, ec));
+  const double denom = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
   return 2.0 * std::atan2(triple, denom);
 }
 
@@ -30,7 +28,7 @@ Status add_rect_light(const RectLight& rect, const Rgb& radiance, Point3 probe,
   Vec3 u, v;
   if (!detail::normalised(detail::vec(rect.right), u) || !detail::normalised(detail::vec(rect.up), v))
     return Status::error(Errc::InvalidArgument, "rect light: right and up must be finite and non-zero");
-  if (!(std::fabs(detail::dot(u, v)) <= 1e-6))
+  if (!(std::fabs(dot(u, v)) <= 1e-6))
     return Status::error(Errc::InvalidArgument, "rect light: right and up must be orthogonal");
   if (!(rect.width > 0 && std::isfinite(rect.width) && rect.height > 0 && std::isfinite(rect.height)))
     return Status::error(Errc::InvalidArgument, "rect light: width and height must be finite and > 0");
@@ -39,8 +37,8 @@ Status add_rect_light(const RectLight& rect, const Rgb& radiance, Point3 probe,
   const Vec3 to_centre = detail::vec(rect.centre) - detail::vec(probe);
   if (!detail::finite(to_centre))
     return Status::error(Errc::InvalidArgument, "rect light: centre and probe must be finite");
-  const Vec3 normal = detail::cross(u, v);
-  if (!(detail::dot(to_centre, normal) < 0)) return Status::success();  // behind or in its plane
+  const Vec3 normal = cross(u, v);
+  if (!(dot(to_centre, normal) < 0)) return Status::success();  // behind or in its plane
 
   // Corners seen from the probe, ordered so that the rectangle is on the left of each edge
   // as the probe sees it: clockwise about the normal (the normal points at the probe).
@@ -55,14 +53,14 @@ Status add_rect_light(const RectLight& rect, const Rgb& radiance, Point3 probe,
   for (int k = 0; k < 4; ++k) {
     const Vec3 a = corner[k], b = corner[(k + 1) % 4];
     const double la = detail::length(a), lb = detail::length(b);
-    const Vec3 axb = detail::cross(a, edge[k]);  // = a x b, from the exact edge vector
+    const Vec3 axb = cross(a, edge[k]);  // = a x b, from the exact edge vector
     const double sin_len = detail::length(axb);  // |a x b| = la lb sin T
-    const double theta = std::atan2(sin_len, detail::dot(a, b));
+    const double theta = std::atan2(sin_len, dot(a, b));
     m.first = m.first + (0.5 * theta / sin_len) * axb;
     // sym((a^ x b^)(a^ + b^)^T) / (1 + a^.b^) with unit a^, b^ and 1 + a^.b^ = |a^ + b^|^2 / 2.
     const Vec3 ua = (1.0 / la) * a, ub = (1.0 / lb) * b;
     const Vec3 n = (1.0 / (la * lb)) * axb, s = ua + ub;
-    const double f = 2.0 / detail::dot(s, s);
+    const double f = 2.0 / dot(s, s);
     const double nn[3] = {n.x, n.y, n.z}, ss[3] = {s.x, s.y, s.z};
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) m.second[r][c] += 0.5 * f * (nn[r] * ss[c] + ss[r] * nn[c]);

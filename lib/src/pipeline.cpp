@@ -7,11 +7,16 @@
 #include "shpack/unity_pack.h"
 
 namespace shpack {
-Status finish_projection(const ShL2& projected_radiance, const FinishOptions& options, FinishedSh& out) noexcept {
+Status check_finish_options(const FinishOptions& options) noexcept {
   if (!std::isfinite(options.intensity) || options.intensity < 0)
     return Status::error(Errc::InvalidArgument, "intensity must be finite and >= 0");
   if (!std::isfinite(options.rotate_deg))
     return Status::error(Errc::InvalidArgument, "rotation must be a finite number of degrees");
+  return Status::success();
+}
+
+Status finish_projection(const ShL2& projected_radiance, const FinishOptions& options, FinishedSh& out) noexcept {
+  if (Status st = check_finish_options(options); !st.ok()) return st;
   FinishedSh result;
   const ShL2 radiance = rotate_about_y(scaled(projected_radiance, options.intensity), options.rotate_deg);
   if (Status st = apply_window(radiance_to_unity_form(radiance), options.window, result.unity_form, &result.window);

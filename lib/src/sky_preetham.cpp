@@ -27,7 +27,7 @@ struct Perez {
 struct SkyModel {
   Perez y, x, yc;          // luminance Y and chromaticities x, y
   double zenith[3];        // Y_z / F_Y(0, theta_s), x_z / F_x(0, theta_s), y_z / F_y(0, theta_s)
-  detail::Vec3 sun;
+  Vec3 sun;
 };
 
 Status make_model(const PreethamSky& sky, SkyModel& m) noexcept {
@@ -59,10 +59,10 @@ Status make_model(const PreethamSky& sky, SkyModel& m) noexcept {
 }
 
 // Sky radiance above the horizon (cos_theta = d.y >= 0), linear Rec. 709 RGB.
-Rgb sky_rgb(const SkyModel& m, detail::Vec3 d, double intensity) noexcept {
-  const double cos_gamma = std::clamp(detail::dot(d, m.sun), -1.0, 1.0);
+Rgb sky_rgb(const SkyModel& m, Vec3 d, double intensity) noexcept {
+  const double cos_gamma = std::clamp(dot(d, m.sun), -1.0, 1.0);
   // gamma by atan2 of |d x s| and d.s: accurate near the sun, where acos is not.
-  const double gamma = std::atan2(detail::length(detail::cross(d, m.sun)), cos_gamma);
+  const double gamma = std::atan2(detail::length(cross(d, m.sun)), cos_gamma);
   const double lum = m.zenith[0] * m.y(d.y, gamma, cos_gamma);
   const double x = m.zenith[1] * m.x(d.y, gamma, cos_gamma), y = m.zenith[2] * m.yc(d.y, gamma, cos_gamma);
   // xyY -> XYZ -> linear sRGB (IEC 61966-2-1) [2].
@@ -103,7 +103,7 @@ ShL2 project_upper(const SkyModel& m, double intensity, int n_theta, int n_phi) 
     const double y = nodes[k], s = std::sqrt((1.0 - y) * (1.0 + y));
     for (int j = 0; j < n_phi; ++j) {
       const double phi = 2.0 * kPi * (j + 0.5) / n_phi;
-      const detail::Vec3 d{s * std::cos(phi), y, s * std::sin(phi)};
+      const Vec3 d{s * std::cos(phi), y, s * std::sin(phi)};
       const Rgb l = sky_rgb(m, d, intensity);
       const double w = weights[k] * 2.0 * kPi / n_phi;
       detail::add_zonal(d, {w * l[0], w * l[1], w * l[2]}, {1.0, 1.0, 1.0}, out);
@@ -117,7 +117,7 @@ ShL2 project_upper(const SkyModel& m, double intensity, int n_theta, int n_phi) 
 Status preetham_radiance(const PreethamSky& sky, Dir3 d, Rgb& radiance) noexcept {
   SkyModel m;
   if (Status st = make_model(sky, m); !st.ok()) return st;
-  detail::Vec3 u;
+  Vec3 u;
   if (!detail::normalised(detail::vec(d), u))
     return Status::error(Errc::InvalidArgument, "preetham sky: direction must be finite and non-zero");
   radiance = u.y < 0 ? sky.ground : sky_rgb(m, u, sky.intensity);

@@ -44,13 +44,6 @@ inline Rng stream(std::uint64_t seed, std::uint64_t effect, std::uint64_t probe,
   return Rng(key ^ (light * 0x9E3779B97F4A7C15ull));
 }
 
-inline Vec3d operator+(Vec3d a, Vec3d b) noexcept { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline Vec3d operator-(Vec3d a, Vec3d b) noexcept { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline Vec3d operator*(double s, Vec3d a) noexcept { return {s * a.x, s * a.y, s * a.z}; }
-inline double dot(Vec3d a, Vec3d b) noexcept { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline Vec3d cross(Vec3d a, Vec3d b) noexcept {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
 inline double norm(Vec3d a) noexcept { return std::sqrt(dot(a, a)); }
 inline Vec3d vec(Point3 p) noexcept { return {p.x, p.y, p.z}; }
 inline Vec3d vec(Dir3 d) noexcept { return {d.x, d.y, d.z}; }

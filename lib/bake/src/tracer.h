@@ -13,12 +13,11 @@
 #include <vector>
 
 #include "shpack/io/scene.h"
+#include "shpack/vec3.h"
 
 namespace shpack::bake {
 
-struct Vec3d {
-  double x = 0, y = 0, z = 0;
-};
+using Vec3d = Vec3;  // vec3.h
 
 struct Hit {
   bool hit = false;

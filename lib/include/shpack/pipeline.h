@@ -40,4 +40,8 @@ struct FinishedSh {
 // left as it was.
 Status finish_projection(const ShL2& projected_radiance, const FinishOptions& options, FinishedSh& out) noexcept;
 
+// The option checks of finish_projection alone (intensity and rotation), for callers that
+// want to refuse bad options before they read an image.
+Status check_finish_options(const FinishOptions& options) noexcept;
+
 }  // namespace shpack

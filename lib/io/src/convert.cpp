@@ -1,6 +1,5 @@
 #include "shpack/io/convert.h"
 
-#include <cmath>
 #include <future>
 #include <optional>
 #include <string>
@@ -39,6 +38,10 @@ IoStatus colour_matrix(const std::filesystem::path& path, const ConvertSettings&
   return IoStatus::success();
 }
 
+FinishOptions finish_options(const ConvertSettings& settings) {
+  return {settings.intensity, settings.rotate_deg, settings.window};
+}
+
 // The document of a projection: colour, intensity, rotation, window, Unity form, minimum.
 // `path` names the input in errors.
 IoStatus finish_document(const std::filesystem::path& path, const ConvertSettings& settings,
@@ -55,7 +58,7 @@ IoStatus finish_document(const std::filesystem::path& path, const ConvertSetting
   doc.window = settings.window;
   const ShL2 linear = doc.colour_matrix ? mix_channels(projection.radiance, *doc.colour_matrix) : projection.radiance;
   FinishedSh finished;
-  if (Status st = finish_projection(linear, {settings.intensity, settings.rotate_deg, settings.window}, finished);
+  if (Status st = finish_projection(linear, finish_options(settings), finished);
       !st.ok())
     return IoStatus::error(st.code == Errc::OutOfRange ? IoErrc::Unsupported : IoErrc::InvalidArgument, path, st.what);
   doc.radiance = finished.radiance;
@@ -66,11 +69,10 @@ IoStatus finish_document(const std::filesystem::path& path, const ConvertSetting
   return IoStatus::success();
 }
 
+// finish_projection's option checks, before any image is read.
 IoStatus check_settings(const std::filesystem::path& path, const ConvertSettings& settings) {
-  if (!std::isfinite(settings.intensity) || settings.intensity < 0)
-    return IoStatus::error(IoErrc::InvalidArgument, path, "intensity must be finite and >= 0");
-  if (!std::isfinite(settings.rotate_deg))
-    return IoStatus::error(IoErrc::InvalidArgument, path, "rotation must be a finite number of degrees");
+  if (Status st = check_finish_options(finish_options(settings)); !st.ok())
+    return IoStatus::error(IoErrc::InvalidArgument, path, st.what);
   return IoStatus::success();
 }
 
