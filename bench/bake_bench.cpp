@@ -5,7 +5,7 @@
 //  - BM_BakeAnalytic/10000: 10,000 probes x 8 analytic lights, no visibility effect, one
 //    thread, I/O excluded: the whole bake (closed forms, then Unity form and the 27 floats).
 //  - BM_DecodeExr: decoding one 1024 x 512 float RGB EXR (ZIP, OpenImageIO through
-//    shpack_io's read_image_file, one thread), the yardstick the issue compares against.
+//    shpack_io's read_image_file, one thread), the yardstick: an analytic bake must beat it.
 //  - BM_ShadowRays: `shadows` against a ~1M-triangle mesh (a perforated canopy between the
 //    probes and four lights), one thread: rays per CPU second (the "rays/s" counter).
 //  - BM_BakeGrowth/probes/lights/bounces: how the time grows with each.
@@ -37,48 +37,48 @@ std::vector<Point3> probe_grid(int count) {
 }
 
 // Eight lights, one of every kind.
-std::vector<io::SceneLight> eight_lights() {
-  std::vector<io::SceneLight> lights(8);
-  lights[0].type = io::LightType::Directional;
+std::vector<scene::SceneLight> eight_lights() {
+  std::vector<scene::SceneLight> lights(8);
+  lights[0].type = scene::LightType::Directional;
   lights[0].direction = {0.29, -0.95, 0.1};
   lights[0].colour = {900, 880, 850};
   lights[0].angular_diameter = 0.53 * std::numbers::pi / 180;
-  lights[1].type = io::LightType::Sphere;
+  lights[1].type = scene::LightType::Sphere;
   lights[1].position = {0, 4, 0};
   lights[1].radius = 0.2;
   lights[1].colour = {20, 20, 20};
-  lights[2].type = io::LightType::Point;
+  lights[2].type = scene::LightType::Point;
   lights[2].position = {3, 3.5, -1};
   lights[2].colour = {5, 4, 3};
-  lights[3].type = io::LightType::Spot;
+  lights[3].type = scene::LightType::Spot;
   lights[3].position = {-3, 3.5, 1};
   lights[3].direction = {0.6, -0.8, 0};
   lights[3].outer_angle = 0.7;
   lights[3].inner_angle = 0.4;
   lights[3].colour = {9, 9, 9};
-  lights[4].type = io::LightType::Rect;
+  lights[4].type = scene::LightType::Rect;
   lights[4].position = {0, 2, 4};
   lights[4].right = {-1, 0, 0};
   lights[4].up = {0, 1, 0};
   lights[4].width = 1.2;
   lights[4].height = 1;
   lights[4].colour = {40, 40, 40};
-  lights[5].type = io::LightType::Disk;
+  lights[5].type = scene::LightType::Disk;
   lights[5].position = {0, 3.9, -3};
   lights[5].direction = {0, -1, 0};
   lights[5].radius = 0.3;
   lights[5].colour = {30, 30, 30};
-  lights[6].type = io::LightType::Hemisphere;
+  lights[6].type = scene::LightType::Hemisphere;
   lights[6].colour = {0.3, 0.4, 0.6};
   lights[6].ground = {0.1, 0.1, 0.1};
-  lights[7].type = io::LightType::Ambient;
+  lights[7].type = scene::LightType::Ambient;
   lights[7].colour = {0.02, 0.02, 0.02};
   for (std::size_t k = 0; k < lights.size(); ++k) lights[k].label = "lights[" + std::to_string(k) + "]";
   return lights;
 }
 
 void BM_BakeAnalytic(benchmark::State& state) {
-  io::Scene scene;
+  scene::Scene scene;
   scene.file = "bench.json";
   scene.probes = probe_grid(static_cast<int>(state.range(0)));
   scene.lights = eight_lights();
@@ -126,9 +126,9 @@ BENCHMARK(BM_DecodeExr)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 
 // A canopy at y = 3 over [-10, 10]^2: an n x n vertex grid, gently waved, with every fourth
 // 8 x 8 block of cells left open so that some shadow rays get through.
-io::SceneShape canopy(int n) {
-  io::SceneShape shape;
-  shape.type = io::ShapeType::Mesh;
+scene::SceneShape canopy(int n) {
+  scene::SceneShape shape;
+  shape.type = scene::ShapeType::Mesh;
   shape.label = "canopy";
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
@@ -146,11 +146,11 @@ io::SceneShape canopy(int n) {
   return shape;
 }
 
-io::Scene shadow_scene(int probes, int lights, int bounces) {
-  io::Scene scene;
+scene::Scene shadow_scene(int probes, int lights, int bounces) {
+  scene::Scene scene;
   scene.file = "bench.json";
   scene.probes = probe_grid(probes);
-  const std::vector<io::SceneLight> all = eight_lights();
+  const std::vector<scene::SceneLight> all = eight_lights();
   for (const int k : {1, 4, 5, 2, 0, 3}) {  // sphere, rect, disk, point, sun, spot
     if (static_cast<int>(scene.lights.size()) == lights) break;
     scene.lights.push_back(all[k]);
@@ -159,8 +159,8 @@ io::Scene shadow_scene(int probes, int lights, int bounces) {
   scene.geometry.push_back(canopy(817));  // 2 x 816^2 x 3/4 = 998,784 triangles
   scene.geometry.back().albedo = {0.5, 0.5, 0.5};
   // A floor under the probes, so that bounce paths go back and forth.
-  io::SceneShape floor;
-  floor.type = io::ShapeType::Box;
+  scene::SceneShape floor;
+  floor.type = scene::ShapeType::Box;
   floor.albedo = {0.5, 0.5, 0.5};
   floor.vertices = {-10, -0.1f, -10, 10, -0.1f, -10, 10, 0, -10, -10, 0, -10,
                     -10, -0.1f, 10,  10, -0.1f, 10,  10, 0, 10,  -10, 0, 10};
@@ -176,7 +176,7 @@ io::Scene shadow_scene(int probes, int lights, int bounces) {
 }
 
 void BM_ShadowRays(benchmark::State& state) {
-  const io::Scene scene = shadow_scene(64, 4, 0);
+  const scene::Scene scene = shadow_scene(64, 4, 0);
   bake::BakeOptions options;
   options.threads = 1;
   std::uint64_t rays = 0;
@@ -195,7 +195,7 @@ void BM_ShadowRays(benchmark::State& state) {
 BENCHMARK(BM_ShadowRays)->Unit(benchmark::kMillisecond)->Iterations(2);
 
 void BM_BakeGrowth(benchmark::State& state) {
-  const io::Scene scene = shadow_scene(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)),
+  const scene::Scene scene = shadow_scene(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)),
                                        static_cast<int>(state.range(2)));
   bake::BakeOptions options;
   options.threads = 1;

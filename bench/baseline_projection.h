@@ -1,6 +1,7 @@
 // baseline_projection.h - the plain per-texel projection that shpack's exact path is
-// measured against (issue 6): for every texel the direction from sin/cos, the 9 basis
-// values, the exact solid angle, double accumulation; no tables, no SIMD, no threads.
+// measured against (the speed targets of docs/accuracy.md): for every texel the direction
+// from sin/cos, the 9 basis values, the exact solid angle, double accumulation; no tables,
+// no SIMD, no threads.
 // It is the code a careful engineer writes first, kept only as a speed reference.
 #pragma once
 

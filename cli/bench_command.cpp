@@ -1,7 +1,10 @@
 #include "bench_command.h"
 
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
+#include <system_error>
 
 #include "report.h"
 #include "validators.h"
@@ -25,7 +28,8 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& options) {
   CLI::App* cmd = app.add_subcommand("bench", "Accuracy against time of every projection method");
   cmd->add_option("inputs", options.inputs,
                   "Equirect maps, or synthetic:band-limited|texel|sun|gradient "
-                  "(default: data/hdri/*.exr and the synthetic maps)");
+                  "(default: $SHPACK_DATA_DIR/*.exr, else the installed <prefix>/share/shpack/hdri/*.exr; "
+                  "then the synthetic maps)");
   cmd->add_option("--methods", options.methods,
                   "Comma-separated: a name (mc) runs its sweep, a spec (mc:4096) one run "
                   "(default: every method)")
@@ -56,10 +60,17 @@ int run_bench(const BenchOptions& options) {
     return kExitUsage;  // checked by CLI11
   std::vector<std::string> inputs = options.inputs;
   if (inputs.empty()) {
-    inputs = study::default_inputs(SHPACK_BUNDLED_MAPS_DIR);
-    if (inputs.size() == study::synthetic_map_names().size())
-      std::fprintf(stderr, "bench: no bundled maps in %s; measuring the synthetic maps only\n",
-                   SHPACK_BUNDLED_MAPS_DIR);
+    // The installed data (<exe dir>/../share/shpack/hdri) or $SHPACK_DATA_DIR; never the
+    // source tree.
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    const std::filesystem::path dir = study::find_bundled_maps(std::getenv(study::kDataDirVariable), exe);
+    inputs = study::default_inputs(dir);
+    if (dir.empty())
+      std::fprintf(stderr, "bench: no bundled maps (neither $%s nor <command's folder>/../share/shpack/hdri "
+                   "is a folder); measuring the synthetic maps only\n", study::kDataDirVariable);
+    else if (inputs.size() == study::synthetic_map_names().size())
+      std::fprintf(stderr, "bench: no bundled maps in %s; measuring the synthetic maps only\n", dir.c_str());
   }
 
   const study::StudySettings settings{options.repeats, options.threads};

@@ -1,6 +1,7 @@
 // bench_command.h - `shpack bench [INPUTS...]`: what accuracy costs in time, per method.
 //
-// For each input (default: the bundled maps data/hdri/*.exr, then the synthetic maps of
+// For each input (default: the bundled maps, installed as <prefix>/share/shpack/hdri/*.exr and
+// found from the command's own path, or $SHPACK_DATA_DIR/*.exr; then the synthetic maps of
 // bench/study/include/shpack/study/study_inputs.h) and each method and parameter
 // (method_sweep.h), the error against exact (accuracy.h) and the time of the projection
 // (study.h). stdout gets a markdown report, or with --json a JSON array; --plot PREFIX

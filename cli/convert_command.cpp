@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <string>
 #include <string_view>
@@ -14,12 +15,12 @@
 
 #include "batch.h"
 #include "enum_option.h"
+#include "output_check.h"
 #include "report.h"
 #include "shpack/io/atomic_write.h"
 #include "shpack/io/convert.h"
 #include "shpack/io/json_writer.h"
 #include "shpack/io/output_format.h"
-#include "shpack/io/sun.h"
 #include "validators.h"
 
 namespace shpack::cli {
@@ -38,7 +39,7 @@ std::string with_remedy(const io::IoStatus& st, const ConvertOptions& options) {
   switch (st.code) {
     case io::IoErrc::NonFiniteTexel: return st.message + "; use --nonfinite=zero to replace them";
     case io::IoErrc::UnknownLayout:
-      return options.layout == io::Layout::Auto ? st.message + "; name the layout with --layout" : st.message;
+      return options.layout == Layout::Auto ? st.message + "; name the layout with --layout" : st.message;
     default: return st.message;
   }
 }
@@ -47,16 +48,14 @@ std::string with_remedy(const io::IoStatus& st, const ConvertOptions& options) {
 // when it is empty. Returns the error line to report, or "" on success; runs on any thread.
 std::string convert_one(const fs::path& input, const std::vector<std::string>& face_files, const fs::path& output,
                         const io::ConvertSettings& settings, const ConvertOptions& options) {
-  io::ShDocument doc;
+  ShDocument doc;
   std::array<fs::path, kFaceNames.size()> faces;
   std::copy(face_files.begin(), face_files.end(), faces.begin());
-  if (io::IoStatus st = !face_files.empty()    ? io::convert_cube_faces(faces, settings, doc)
-                        : options.extract_sun  ? io::convert_env_map_extracting_sun(input, settings, doc)
-                                               : io::convert_env_map(input, settings, doc);
+  if (io::IoStatus st = face_files.empty() ? io::convert_env_map(input, settings, doc)
+                                           : io::convert_cube_faces(faces, settings, doc);
       !st.ok()) {
     return with_remedy(st, options);
   }
-  if (options.l1) io::truncate_to_l1(doc);
   const std::string json = io::format_document(doc, options.format);
   if (output.empty()) {
     std::cout << json << std::flush;
@@ -64,11 +63,6 @@ std::string convert_one(const fs::path& input, const std::vector<std::string>& f
   }
   if (io::IoStatus st = io::write_file_atomically(output, json); !st.ok()) return st.message;
   return {};
-}
-
-bool same_file(const fs::path& a, const fs::path& b) {
-  std::error_code ec;
-  return fs::equivalent(a, b, ec);  // false (with ec set) when either does not exist
 }
 
 // Input -> output pairs, or a usage problem. One output per input, never an input.
@@ -107,20 +101,12 @@ Plan plan_outputs(const ConvertOptions& options) {
   if (!options.faces.empty()) {  // one document from six files
     plan.problem = resolve_faces(options.faces, plan.faces);
     if (!plan.problem.empty()) return plan;
-    if (options.extract_sun) {
-      plan.problem = "convert: --extract-sun reads equirect maps, not --faces";
-      return plan;
-    }
     if (!options.inputs.empty() || !options.out_dir.empty()) {
       plan.problem = "convert: --faces makes one document from six files: no other inputs, no --out-dir";
       return plan;
     }
-    for (const std::string& face : plan.faces) {
-      if (!options.output.empty() && same_file(face, options.output)) {
-        plan.problem = "convert: " + face + " is both a face and the output";
-        return plan;
-      }
-    }
+    plan.problem = check_output_not_input(options.output, {plan.faces.begin(), plan.faces.end()});
+    if (!plan.problem.empty()) return plan;
     plan.jobs.emplace_back(plan.faces[0], options.output);
     return plan;
   }
@@ -133,6 +119,7 @@ Plan plan_outputs(const ConvertOptions& options) {
     return plan;
   }
   std::map<fs::path, fs::path> input_of_output;
+  const std::vector<fs::path> all_inputs(options.inputs.begin(), options.inputs.end());
   for (const std::string& input : options.inputs) {
     const fs::path output = options.out_dir.empty()
                                 ? fs::path(options.output)
@@ -144,10 +131,8 @@ Plan plan_outputs(const ConvertOptions& options) {
                        output.string();
         return plan;
       }
-      if (same_file(input, output)) {
-        plan.problem = "convert: " + input + " is both the input and the output";
-        return plan;
-      }
+      plan.problem = check_output_not_input(output.string(), all_inputs);  // no output is any input
+      if (!plan.problem.empty()) return plan;
     }
     plan.jobs.emplace_back(input, output);
   }
@@ -167,15 +152,15 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
       ->expected(1, static_cast<int>(kFaceNames.size()))
       ->excludes(inputs);
   CLI::Option* output = cmd->add_option("-o,--output", options.output,
-                                        "Output JSON file (default: stdout)");
+                                        "Output JSON file; - for stdout (default: stdout)");
   cmd->add_option("--out-dir", options.out_dir, "Write DIR/<stem>.json for each input")
       ->excludes(output);
   add_enum_option(*cmd, "--layout", options.layout,
-                  {{"auto", io::Layout::Auto}, {"equirect", io::Layout::Equirect},
-                   {"hcross", io::Layout::HorizontalCross}, {"vcross", io::Layout::VerticalCross},
-                   {"hstrip", io::Layout::HorizontalStrip}, {"vstrip", io::Layout::VerticalStrip},
-                   {"octahedral", io::Layout::Octahedral}, {"angular", io::Layout::Angular},
-                   {"mirrorball", io::Layout::MirrorBall}},
+                  {{"auto", Layout::Auto}, {"equirect", Layout::Equirect},
+                   {"hcross", Layout::HorizontalCross}, {"vcross", Layout::VerticalCross},
+                   {"hstrip", Layout::HorizontalStrip}, {"vstrip", Layout::VerticalStrip},
+                   {"octahedral", Layout::Octahedral}, {"angular", Layout::Angular},
+                   {"mirrorball", Layout::MirrorBall}},
                   "Image layout; auto: 2:1 equirect, 4:3/3:4 crosses, 6:1/1:6 strips, 1x1 uniform "
                   "(default auto; a square image needs octahedral, angular or mirrorball)");
   add_enum_option(*cmd, "--cube-frame", options.cube_frame,
@@ -183,9 +168,9 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
                   "World the cube faces were made in: unity, gl (z mirrored), threejs (default unity)");
   cmd->add_option("--layer", options.layer, "EXR part or channel layer to read (e.g. diffuse for diffuse.R/G/B)");
   add_enum_option(*cmd, "--colorspace", options.colorspace,
-                  {{"auto", io::ColorSpace::Auto}, {"linear-rec709", io::ColorSpace::LinearRec709},
-                   {"acescg", io::ColorSpace::AcesCg}, {"aces2065-1", io::ColorSpace::Aces2065_1},
-                   {"linear-p3-d65", io::ColorSpace::LinearP3D65}, {"linear-rec2020", io::ColorSpace::LinearRec2020}},
+                  {{"auto", ColorSpace::Auto}, {"linear-rec709", ColorSpace::LinearRec709},
+                   {"acescg", ColorSpace::AcesCg}, {"aces2065-1", ColorSpace::Aces2065_1},
+                   {"linear-p3-d65", ColorSpace::LinearP3D65}, {"linear-rec2020", ColorSpace::LinearRec2020}},
                   "Primaries of the input's linear RGB (default auto: the EXR's chromaticities, else Rec. 709)");
   cmd->add_option("--method", options.method,
                   "exact, center, mip:K, mc:N, qmc:N, fib:N, is:N, riemann:N, cube:N, "
@@ -220,6 +205,11 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
         const Status st = parse_window(text, window);
         return st.ok() ? std::string() : std::string(st.what);
       });
+  cmd->add_option("--max-texels", options.max_texels,
+                  "Refuse a map whose header declares more than N texels (display or data window; "
+                  "six faces together), before reading it (default " + std::to_string(io::kDefaultMaxTexels) + ")")
+      ->check(unsigned_integer())
+      ->check(CLI::Range(std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max()));
   cmd->add_option("--threads", options.threads, "Worker threads (default 0: all cores)")
       ->check(unsigned_integer());
   add_enum_option(*cmd, "--format", options.format,
@@ -253,28 +243,35 @@ int run_convert(const ConvertOptions& options) {
   }
 
   io::ConvertSettings settings;
-  settings.env_map.layout = options.layout;
-  settings.env_map.layer = options.layer;
-  settings.env_map.cube_frame = options.cube_frame;
-  settings.colorspace = options.colorspace;
-  settings.env_map.project = {Method::Exact, options.nonfinite, options.negative, options.threads};
-  if (!parse_method(options.method, settings.method).ok()) return kExitUsage;  // checked by CLI11
+  settings.source = {options.layout, options.layer, options.colorspace, options.cube_frame, options.max_texels};
+  shpack::ConvertOptions& convert = settings.convert;
+  if (!parse_method(options.method, convert.method).ok()) return kExitUsage;  // checked by CLI11
   if (options.seed) {
     // "mc:N:SEED" and --seed both name a seed; taking either silently could surprise.
     if (options.method.find(':') != options.method.rfind(':')) {
       report_error("convert: give the seed once, in --method or with --seed");
       return kExitUsage;
     }
-    settings.method.seed = *options.seed;
+    convert.method.seed = *options.seed;
   }
-  settings.intensity = factor;
-  settings.rotate_deg = options.rotate_deg;
-  if (!parse_window(options.window, settings.window).ok()) return kExitUsage;  // checked by CLI11
+  convert.nonfinite = options.nonfinite;
+  convert.negative = options.negative;
+  convert.extract_sun = options.extract_sun;
+  convert.finish.intensity = factor;
+  convert.finish.rotate_deg = options.rotate_deg;
+  if (!parse_window(options.window, convert.finish.window).ok()) return kExitUsage;  // checked by CLI11
+  convert.finish.l1 = options.l1;
+  if (!plan.faces.empty()) {  // the layout is known before anything is read
+    if (Status st = check_convert_options(convert, Layout::Faces, options.cube_frame); !st.ok()) {
+      report_error(std::string("convert: --faces: ") + st.what);
+      return kExitUsage;
+    }
+  }
   // Files in parallel: up to `threads` files at a time, each projected with its share of the
   // threads (the output is bit-identical for any thread count); errors reported in input order.
   const unsigned threads = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   const auto files = static_cast<unsigned>(std::min<std::size_t>(plan.jobs.size(), threads));
-  settings.env_map.project.threads = std::max(1u, threads / files);
+  convert.threads = std::max(1u, threads / files);
   bool all_ok = true;
   run_in_order<std::string>(
       plan.jobs.size(), files,

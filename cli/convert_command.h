@@ -16,8 +16,9 @@
 #include <vector>
 
 #include "shpack/conventions.h"
-#include "shpack/io/colorspace.h"
-#include "shpack/io/layout.h"
+#include "shpack/colorspace.h"
+#include "shpack/layout.h"
+#include "shpack/io/image_file.h"
 #include "shpack/io/output_format.h"
 #include "shpack/project.h"
 
@@ -27,7 +28,7 @@ struct ConvertOptions {
   std::vector<std::string> inputs;
   std::string output;   // -o; empty: stdout
   std::string out_dir;  // --out-dir
-  io::Layout layout = io::Layout::Auto;
+  Layout layout = Layout::Auto;
   std::string method = "exact";  // --method, parsed by shpack::parse_method
   std::optional<std::uint64_t> seed;  // --seed: for mc, qmc and is
   NonFinite nonfinite = NonFinite::Error;
@@ -38,12 +39,13 @@ struct ConvertOptions {
   std::string window = "none";  // --window, parsed by shpack::parse_window
   unsigned threads = 0;    // 0: all hardware threads
   io::OutputFormat format = io::OutputFormat::Json;  // --format
-  bool l1 = false;         // --l1: band 2 removed (io::truncate_to_l1)
-  bool extract_sun = false;  // --extract-sun (io::convert_env_map_extracting_sun)
+  bool l1 = false;         // --l1: band 2 removed (FinishOptions::l1)
+  bool extract_sun = false;  // --extract-sun (light_extraction.h)
   std::vector<std::string> faces;  // --faces: six face files in Unity's order, or one {face} pattern
   CubeFrame cube_frame = CubeFrame::Unity;  // --cube-frame
   std::string layer;                        // --layer: EXR part or channel layer
-  io::ColorSpace colorspace = io::ColorSpace::Auto;  // --colorspace
+  ColorSpace colorspace = ColorSpace::Auto;  // --colorspace
+  std::uint64_t max_texels = io::kDefaultMaxTexels;  // --max-texels: the budget of a map's declared size
 };
 
 CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options);

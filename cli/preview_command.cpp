@@ -3,8 +3,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <string>
+#include <vector>
 
+#include "output_check.h"
 #include "report.h"
+#include "shpack/io/atomic_write.h"
 #include "shpack/io/json_reader.h"
 #include "shpack/io/preview.h"
 
@@ -28,7 +32,7 @@ std::string number(double v) {
 CLI::App* add_preview_command(CLI::App& app, PreviewOptions& options) {
   CLI::App* cmd = app.add_subcommand("preview", "Pictures of the lighting: lit spheres, E/pi, error map (PNG)");
   cmd->add_option("document", options.document, "A JSON file written by shpack convert")->required();
-  cmd->add_option("-o,--output", options.output, "The image to write (.png)")->required();
+  cmd->add_option("-o,--output", options.output, "The image to write (.png); - for stdout (the report then goes to stderr)")->required();
   cmd->add_option("--input", options.input,
                   "The equirect map the document came from: adds its brute-force E/pi and the error map");
   cmd->add_option("--size", options.size, "Sphere diameter in pixels (default 128)")
@@ -38,8 +42,15 @@ CLI::App* add_preview_command(CLI::App& app, PreviewOptions& options) {
 
 int run_preview(const PreviewOptions& options) {
   const std::filesystem::path output = options.output;
-  if (output.extension() != ".png" && output.extension() != ".PNG") {
+  const bool to_stdout = io::output_descriptor(output) == 1;  // "-", /dev/stdout: the PNG bytes
+  if (io::output_descriptor(output) < 0 && output.extension() != ".png" && output.extension() != ".PNG") {
     report_error("preview: " + options.output + ": the image is written as PNG; name it .png");
+    return kExitUsage;
+  }
+  std::vector<std::filesystem::path> inputs = {options.document};
+  if (!options.input.empty()) inputs.emplace_back(options.input);
+  if (const std::string problem = check_output_not_input(options.output, inputs); !problem.empty()) {
+    report_error(problem);
     return kExitUsage;
   }
   io::ShJsonContent content;
@@ -61,12 +72,13 @@ int run_preview(const PreviewOptions& options) {
     report_error(st.message);
     return kExitFailure;
   }
-  std::cout << "tone mapping: Reinhard x/(1+x) per channel, then sRGB; mean E/pi luminance "
+  std::ostream& text = to_stdout ? std::cerr : std::cout;  // stdout holds the PNG
+  text << "tone mapping: Reinhard x/(1+x) per channel, then sRGB; mean E/pi luminance "
             << number(report.mean_luminance) << " shown at 0.5\n"
             << "negative E/pi (striped): " << percent(report.negative_fraction, 1.0) << " of the sphere\n";
   if (report.has_reference) {
     const double bound = report.reference_bound_luminance;
-    std::cout << "reference: brute-force E/pi over " << report.cells_w << "x" << report.cells_h
+    text << "reference: brute-force E/pi over " << report.cells_w << "x" << report.cells_h
               << " cells, error <= " << number(bound) << " (" << percent(bound, report.mean_luminance)
               << " of the mean)\n"
               << "sh - reference (luminance): max |error| " << number(report.max_abs_error) << " ("

@@ -5,8 +5,11 @@
 # so that an importer writes
 #   find_package(shpack 0.1 REQUIRED)
 #   target_link_libraries(importer PRIVATE shpack::core)   # or shpack::c
-# lib/io and the shpack command are not installed: they need OpenImageIO and are tools of this
-# repository. tests/install_consumer builds a project against the installed tree.
+# Also the shpack command (bin/shpack) and the bundled maps it measures when `shpack bench` is
+# given no inputs (share/shpack/hdri: data/hdri's EXRs, README and licence; the command finds
+# them from its own path, bin/../share/shpack/hdri). lib/io is not installed as a library: it
+# needs OpenImageIO and serves the command. tests/install_consumer builds a project against
+# the installed tree.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -29,3 +32,10 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/shpackConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/shpackConfig.cmake ${PROJECT_BINARY_DIR}/shpackConfigVersion.cmake
   DESTINATION ${SHPACK_INSTALL_CMAKEDIR})
+
+# The command and its data.
+install(TARGETS shpack RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+file(GLOB shpack_bundled_maps ${PROJECT_SOURCE_DIR}/data/hdri/*.exr)
+install(FILES ${shpack_bundled_maps} ${PROJECT_SOURCE_DIR}/data/hdri/README.md
+              ${PROJECT_SOURCE_DIR}/data/hdri/license.txt
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/shpack/hdri)

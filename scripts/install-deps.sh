@@ -14,7 +14,6 @@ packages=(
   libcli11-dev                   # the command line (cli/)
   libembree-dev                  # ray tracing of shpack bake's visibility effects (lib/bake)
   libvalijson-dev                # JSON Schema validation of scene files (lib/io)
-  libtinyobjloader-dev           # OBJ meshes in scene files (lib/io)
   libgtest-dev                   # tests/
   libbenchmark-dev               # bench/
   mono-mcs mono-runtime          # tests/unity: the Unity package's C# compiled and run under Mono

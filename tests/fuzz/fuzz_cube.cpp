@@ -22,11 +22,11 @@ using shpack_fuzz::Reader;
 
 void fuzz_texel_integrals(Reader& in) {
   const std::uint32_t size = in.take32(), x = in.take32(), y = in.take32(), face = in.take(8);
-  const auto method = static_cast<shpack::Method>(in.take(3));
+  const auto method = static_cast<shpack::SamplingMethod>(in.take(3));
   std::array<double, shpack::kShCount> out{};
   const shpack::Status st = shpack::cube_texel_basis_integrals(size, static_cast<shpack::CubeFace>(face), x, y, method, out);
   const bool valid = size != 0 && x < size && y < size && face < 6 &&
-                     (method == shpack::Method::Exact || method == shpack::Method::Center);
+                     (method == shpack::SamplingMethod::Exact || method == shpack::SamplingMethod::Center);
   if (st.ok() != valid) std::abort();
   if (!st.ok()) return;
   // The texel's solid angle is positive and at most a face (2 pi / 3 = 2.09): its relative
@@ -48,7 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   const std::uint32_t n = in.take(12);  // 0 is a bad size
   shpack::ProjectOptions options;
-  options.method = static_cast<shpack::Method>(in.take(3));  // 2 is not a method
+  options.method = static_cast<shpack::SamplingMethod>(in.take(3));  // 2 is not a method
   options.nonfinite = in.take(2) == 0 ? shpack::NonFinite::Error : shpack::NonFinite::Zero;
   options.negative = in.take(2) == 0 ? shpack::Negative::Keep : shpack::Negative::Clamp;
 
@@ -84,7 +84,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     shpack::ImageView r = faces[f];
     if (!shpack::resolve_view(r).ok() || r.width != r.height || r.width != faces[0].width) first_bad = f;
   }
-  const bool method_ok = options.method == shpack::Method::Exact || options.method == shpack::Method::Center;
+  const bool method_ok = options.method == shpack::SamplingMethod::Exact || options.method == shpack::SamplingMethod::Center;
 
   shpack::ShL2 sh;
   shpack::ProjectStats stats;

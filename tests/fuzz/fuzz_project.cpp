@@ -52,7 +52,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::int64_t row_pad = static_cast<std::int64_t>(in.take(5)) * value;
   const bool flip_rows = in.take(2) == 1;
   shpack::ProjectOptions options;
-  options.method = in.take(2) == 0 ? shpack::Method::Exact : shpack::Method::Center;
+  options.method = in.take(2) == 0 ? shpack::SamplingMethod::Exact : shpack::SamplingMethod::Center;
   options.nonfinite = in.take(2) == 0 ? shpack::NonFinite::Error : shpack::NonFinite::Zero;
   options.negative = in.take(2) == 0 ? shpack::Negative::Keep : shpack::Negative::Clamp;
   options.threads = in.take(4);

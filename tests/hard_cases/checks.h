@@ -1,7 +1,7 @@
 // checks.h - comparisons shared by the hard-case tests: double results against long-double
 // oracles under a stated tolerance, and the packed float outputs against float rounding.
 // Each check is also a gtest EXPECT; the functions return the worst ratio for the
-// "[ measure  ]" lines that the closing table of issue 5 quotes.
+// "[ measure  ]" lines that docs/hard-cases.md quotes.
 #pragma once
 
 #include <gtest/gtest.h>

@@ -214,7 +214,7 @@ TEST(CliValues, AllBlackSceneHasNoNaNAnywhere) {
   }
 }
 
-// Regression for a bug this test found (issue 5): lib/io/src/convert.cpp checked only the
+// Regression for a bug this test found: lib/io/src/convert.cpp checked only the
 // 27 floats of to_unity_sh(unity_form); the shader vectors (SHA.w = s0 - s6, SHB.z = 3 s6)
 // could overflow to Inf while those fit, and the JSON writer wrote null into "shader" with
 // exit 0. convert now finishes through the core's finish_projection (pipeline.h), which
@@ -278,7 +278,7 @@ TEST(CliSizes, ShapesThatAreNot2To1NeedLayoutEquirect) {
 
 TEST(CliSizes, LayoutsThroughTheCommandSumTo4Pi) {
   // A unit image in every layout the command reads: radiance L00 / k0 = 4 pi to 1e-12
-  // (issue 5; derived: ~16u for equirect and cubes, quadrature within 5e-15 for the sphere
+  // (the hard cases' target; derived: ~16u for equirect and cubes, quadrature within 5e-15 for the sphere
   // maps, geometry_test.cpp). Add each new --layout here with a size it accepts.
   struct Case {
     const char* layout;

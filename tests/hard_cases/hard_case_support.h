@@ -1,4 +1,4 @@
-// hard_case_support.h - helpers for the hard-case tests (issue 5): a cube-texel oracle, the
+// hard_case_support.h - helpers for the hard-case tests: a cube-texel oracle, the
 // shpack command as a child process (exit code, output, peak RSS), small image files written
 // independently of shpack_io, and the float-rounding tolerance of the packed outputs.
 // Test code only; never in lib/.

@@ -46,7 +46,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::uint32_t kWidth = 16384, kHeight = 8192;
-constexpr long kRssLimitKiB = 256 * 1024;  // issue 5: peak RSS under 256 MB (MiB here: stricter)
+constexpr long kRssLimitKiB = 256 * 1024;  // the target: peak RSS under 256 MB (MiB here: stricter)
 
 float row_value(std::uint32_t j) { return 0.05f + 0.9f * static_cast<float>(j) / (kHeight - 1); }
 

@@ -207,7 +207,7 @@ TEST(Views, HugeButRepresentableStridesAreChecked) {
   EXPECT_EQ(shpack::resolve_view(v).code, shpack::Errc::BadView);
 }
 
-// Regression for a bug fuzz_project found (issue 5): resolve_view formed
+// Regression for a bug fuzz_project found: resolve_view formed
 // llabs(pixel_stride) * width in int64 unchecked, so a pixel stride of 2^62 and a width of 4
 // was signed overflow (UBSan abort) in the function whose job is to reject bad views, and
 // llabs(INT64_MIN) is itself undefined. Every byte offset ImageView::pixel() can form,

@@ -5,7 +5,7 @@
 // Oracles (hard_case_support.h): Gauss-Legendre quadrature in long double, ~1e-18 relative.
 //
 // Two tolerances, both stated where they are used:
-//  - kExactRel = 1e-12 of the channel's coefficient norm for a lone sun (issue 5). The
+//  - kExactRel = 1e-12 of the channel's coefficient norm for a lone sun (the target). The
 //    derived bound is far smaller: a lone texel's weights are its exact integrals to a few
 //    u each (project.h; the cube: ~10 u / h of k_i Omega, project_cube.h), a coefficient
 //    vector of one small texel has norm ~ Omega v sqrt(9 / 4 pi) and k_i <= 1.1, so the
@@ -196,7 +196,7 @@ TEST(Suns, CubeCornerTexelIntegralsAtLargeN) {
   // cube_texel_basis_integrals is project_cube's arithmetic for one texel (project_cube.h),
   // so large faces can be measured without projecting them. Documented bound: each
   // integral within ~10 u / h of k_i Omega (h = 2/N); asserted with the 32 u / h bound of
-  // cube_moments.h. Also asserted: the issue's 1e-12 of the coefficient norm (which the
+  // cube_moments.h. Also asserted: the target of 1e-12 of the coefficient norm (which the
   // documented bound stops guaranteeing above N ~ 1400).
   for (std::uint32_t n : {1024u, 2048u, 4096u}) {
     double worst_norm = 0, worst_bound = 0;
@@ -204,7 +204,7 @@ TEST(Suns, CubeCornerTexelIntegralsAtLargeN) {
       for (auto [x, y] : {std::pair<std::uint32_t, std::uint32_t>{0, 0}, {n - 1, n - 1}, {0, n / 2}}) {
         std::array<double, shpack::kShCount> got{};
         ASSERT_TRUE(shpack::cube_texel_basis_integrals(n, static_cast<shpack::CubeFace>(f), x, y,
-                                                       shpack::Method::Exact, got).ok());
+                                                       shpack::SamplingMethod::Exact, got).ok());
         const std::array<long double, 10> want = cube_texel_oracle(n, f, x, y);
         long double norm2 = 0;
         for (int i = 0; i < 9; ++i) norm2 += want[i] * want[i];
@@ -219,7 +219,7 @@ TEST(Suns, CubeCornerTexelIntegralsAtLargeN) {
     }
     std::cout << "[ measure  ] cube texel N=" << n << ": max |err|/norm = " << worst_norm
               << ", max err / (32 u/h k_i Omega) = " << worst_bound << "\n";
-    // The issue's requirement itself: the worst-case bound above is not sharp (its 1/h is
+    // The target itself: the worst-case bound above is not sharp (its 1/h is
     // the conditioning of the corner formula, reached only when every rounding aligns), so
     // 1e-12 of the norm is asserted directly at these sizes.
     EXPECT_LE(worst_norm, kExactRel) << "N=" << n;

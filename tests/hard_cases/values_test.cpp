@@ -243,7 +243,7 @@ TEST(Values, AllBlackScenesAreExactZerosWithoutNaN) {
   for (float zero : {0.0f, -0.0f}) {
     for (auto [w, h] : {std::pair<std::uint32_t, std::uint32_t>{1, 1}, {16, 8}, {17, 9}, {3, 130}}) {
       const std::vector<float> rgb(std::size_t{3} * w * h, zero);
-      for (shpack::Method method : {shpack::Method::Exact, shpack::Method::Center}) {
+      for (shpack::SamplingMethod method : {shpack::SamplingMethod::Exact, shpack::SamplingMethod::Center}) {
         shpack::ProjectOptions options;
         options.method = method;
         options.negative = Negative::Clamp;

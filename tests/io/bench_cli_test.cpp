@@ -6,12 +6,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "cli_runner.h"
 #include "io_test_files.h"
 #include "shpack/study/method_sweep.h"
+#include "shpack/study/study_inputs.h"
 
 namespace {
 
@@ -75,8 +78,45 @@ TEST(BenchCli, MarkdownAndPlot) {
   EXPECT_NE(run.out.find("\n| fib:1024 | 1024 |"), std::string::npos) << run.out;
   EXPECT_GT(fs::file_size(dir / "plot.png"), 0u);
   EXPECT_GT(fs::file_size(dir / "plot.svg"), 0u);
+  // No temporary is left: they are hidden files beside the output (atomic_write.h).
   for (const auto& entry : fs::directory_iterator(dir.path()))
-    EXPECT_EQ(entry.path().filename().string().find(".tmp."), std::string::npos) << entry.path();
+    EXPECT_NE(entry.path().filename().string().front(), '.') << entry.path();
+}
+
+// Without inputs: the maps of the folder SHPACK_DATA_DIR names, then the synthetic maps; with
+// no such folder (the built command has no share/shpack/hdri beside it), the synthetic maps
+// alone and one line saying so. The source tree's data/hdri is never a default.
+TEST(BenchCli, WithoutInputsTheDataFolderThenTheSyntheticMaps) {
+  const ScratchDir dir;
+  fs::create_directories(dir / "hdri");
+  const fs::path map = write_tiny_map(dir);
+  fs::rename(map, dir / "hdri" / "tiny.exr");
+  const std::vector<std::string> args = {"bench", "--methods", "center", "--json", "--quick", "--repeats", "1"};
+  struct Unset {
+    ~Unset() { unsetenv("SHPACK_DATA_DIR"); }
+  } unset;  // the command inherits the variable; later tests in this process must not
+
+  ASSERT_EQ(setenv("SHPACK_DATA_DIR", (dir / "hdri").c_str(), 1), 0);
+  CliRun run = run_shpack(dir, args);
+  nlohmann::json records = nlohmann::json::parse(run.out, nullptr, /*allow_exceptions=*/false);
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  std::vector<std::string> inputs = {(dir / "hdri" / "tiny.exr").string()};
+  for (const std::string& name : shpack::study::synthetic_map_names()) inputs.push_back(name);
+  ASSERT_TRUE(records.is_array()) << run.out;
+  ASSERT_EQ(records.size(), inputs.size()) << run.out;
+  for (std::size_t i = 0; i < inputs.size(); ++i) EXPECT_EQ(records[i]["input"], inputs[i]);
+  EXPECT_EQ(run.err.find("no bundled maps"), std::string::npos) << run.err;
+
+  ASSERT_EQ(setenv("SHPACK_DATA_DIR", (dir / "missing").c_str(), 1), 0);
+  run = run_shpack(dir, args);
+  records = nlohmann::json::parse(run.out, nullptr, /*allow_exceptions=*/false);
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  ASSERT_TRUE(records.is_array()) << run.out;
+  ASSERT_EQ(records.size(), inputs.size() - 1) << run.out;
+  for (std::size_t i = 1; i < inputs.size(); ++i) EXPECT_EQ(records[i - 1]["input"], inputs[i]);
+  // The note, then one progress line per run.
+  EXPECT_EQ(run.err.rfind("bench: no bundled maps (neither $SHPACK_DATA_DIR nor ", 0), 0u) << run.err;
+  EXPECT_EQ(static_cast<std::size_t>(std::count(run.err.begin(), run.err.end(), '\n')), inputs.size()) << run.err;
 }
 
 TEST(BenchCli, ErrorsAreOneLine) {

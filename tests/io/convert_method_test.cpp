@@ -10,7 +10,7 @@
 
 #include "cli_runner.h"
 #include "io_test_files.h"
-#include "shpack/io/method_projection.h"
+#include "shpack/pipeline.h"
 
 namespace {
 
@@ -61,8 +61,11 @@ TEST(ConvertMethod, ExactAndCenterStillStream) {
   const std::string studio = hdri("studio.exr").string();
   EXPECT_EQ(run_shpack(dir, {"convert", studio, "--method", "exact"}).out,
             run_shpack(dir, {"convert", studio}).out);
-  EXPECT_TRUE(shpack::io::streams_file(shpack::SamplingMethod::Center));
-  EXPECT_FALSE(shpack::io::streams_file(shpack::SamplingMethod::Mip));
+  shpack::ConvertOptions center, mip;
+  center.method.method = shpack::SamplingMethod::Center;
+  mip.method.method = shpack::SamplingMethod::Mip;
+  EXPECT_TRUE(shpack::streams_rows(center, shpack::Layout::Equirect));
+  EXPECT_FALSE(shpack::streams_rows(mip, shpack::Layout::Equirect));
 }
 
 TEST(ConvertMethod, BadSpecsAreUsageErrors) {

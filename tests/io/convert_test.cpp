@@ -35,18 +35,18 @@ TEST(Convert, DocumentDescribesTheSource) {
   EXPECT_EQ(doc.method, MethodSpec{});  // exact
   EXPECT_EQ(doc.intensity, 1.0);
   // data/hdri/README.md: courtyard has small negative texels from lossy compression.
-  EXPECT_GT(doc.diagnostics.negative_texels, 0u);
-  EXPECT_EQ(doc.diagnostics.nonfinite_texels, 0u);
-  EXPECT_EQ(doc.diagnostics.ignored_channels, 0u);
+  EXPECT_GT(doc.texels.negative_texels, 0u);
+  EXPECT_EQ(doc.texels.nonfinite_texels, 0u);
+  EXPECT_EQ(doc.reading.ignored_channels, 0u);
 }
 
 TEST(Convert, UnityFormAndMinimumFollowFromTheRadiance) {
   const ShDocument doc = convert(hdri("courtyard.exr"));
-  EXPECT_EQ(doc.unity_form, radiance_to_unity_form(doc.radiance));
+  EXPECT_EQ(doc.sh.unity_form, radiance_to_unity_form(doc.sh.radiance));
   for (int c = 0; c < kChannelCount; ++c) {
-    const SphereMinimum want = minimum_on_sphere(doc.unity_form, c);
-    EXPECT_EQ(doc.diagnostics.min_e_over_pi[c].value, want.value) << "c=" << c;
-    EXPECT_EQ(doc.diagnostics.min_e_over_pi[c].direction, want.direction) << "c=" << c;
+    const SphereMinimum want = minimum_on_sphere(doc.sh.unity_form, c);
+    EXPECT_EQ(doc.sh.min_e_over_pi[c].value, want.value) << "c=" << c;
+    EXPECT_EQ(doc.sh.min_e_over_pi[c].direction, want.direction) << "c=" << c;
   }
 }
 
@@ -54,18 +54,18 @@ TEST(Convert, IntensityScalesTheRadiance) {
   const std::filesystem::path path = hdri("studio.exr");
   const ShDocument plain = convert(path);
   ConvertSettings doubled;
-  doubled.intensity = 2.0;  // a power of two: every coefficient doubles exactly
+  doubled.convert.finish.intensity = 2.0;  // a power of two: every coefficient doubles exactly
   const ShDocument twice = convert(path, doubled);
   EXPECT_EQ(twice.intensity, 2.0);
   for (int c = 0; c < kChannelCount; ++c)
     for (int i = 0; i < kShCount; ++i)
-      EXPECT_EQ(twice.radiance.c[c][i], 2.0 * plain.radiance.c[c][i]) << "c=" << c << " i=" << i;
+      EXPECT_EQ(twice.sh.radiance.c[c][i], 2.0 * plain.sh.radiance.c[c][i]) << "c=" << c << " i=" << i;
 }
 
 TEST(Convert, BadIntensityIsRefused) {
   for (const double bad : {-1.0, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
     ConvertSettings settings;
-    settings.intensity = bad;
+    settings.convert.finish.intensity = bad;
     ShDocument doc;
     EXPECT_EQ(convert_env_map(hdri("studio.exr"), settings, doc).code, IoErrc::InvalidArgument) << bad;
   }
@@ -73,7 +73,7 @@ TEST(Convert, BadIntensityIsRefused) {
 
 TEST(Convert, TooBrightForFloatIsRefused) {
   ConvertSettings settings;
-  settings.intensity = 1e300;  // far beyond float32 (3.4e38) for any map that is not black
+  settings.convert.finish.intensity = 1e300;  // far beyond float32 (3.4e38) for any map that is not black
   ShDocument doc;
   const IoStatus st = convert_env_map(hdri("studio.exr"), settings, doc);
   EXPECT_EQ(st.code, IoErrc::Unsupported) << st.message;

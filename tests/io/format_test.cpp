@@ -142,7 +142,7 @@ ShDocument random_float_document(std::mt19937_64& rng) {
   std::uniform_int_distribution<std::uint32_t> any_bits;
   ShDocument doc;
   doc.source = {{"sky 2k.exr"}, {std::string(64, 'a')}, Layout::Equirect, 1024, 512};
-  for (auto& channel : doc.unity_form.c) {
+  for (auto& channel : doc.sh.unity_form.c) {
     for (double& v : channel) {
       float f;
       do f = std::bit_cast<float>(any_bits(rng));
@@ -150,7 +150,10 @@ ShDocument random_float_document(std::mt19937_64& rng) {
       v = f;
     }
   }
-  doc.unity_form.c[1][4] = -0.0;
+  doc.sh.unity_form.c[1][4] = -0.0;
+  // The finish stage packs (pipeline.h); the writers only copy the packed floats.
+  doc.sh.unity_sh = to_unity_sh(doc.sh.unity_form);
+  doc.sh.shader = to_shader_vectors(doc.sh.unity_form);
   return doc;
 }
 

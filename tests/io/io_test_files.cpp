@@ -43,6 +43,24 @@ bool write_image(const std::filesystem::path& path, int width, int height, int c
   return true;
 }
 
+bool write_named_constant_image(const std::filesystem::path& path, int width, int height,
+                                const std::vector<std::string>& names, const std::vector<float>& texel) {
+  const std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path.string());
+  if (!out) {
+    ADD_FAILURE() << "cannot create a writer for " << path << ": " << OIIO::geterror();
+    return false;
+  }
+  OIIO::ImageSpec spec(width, height, static_cast<int>(names.size()), OIIO::TypeDesc::FLOAT);
+  spec.channelnames = names;
+  std::vector<float> pixels;
+  for (int i = 0; i < width * height; ++i) pixels.insert(pixels.end(), texel.begin(), texel.end());
+  if (!out->open(path.string(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) || !out->close()) {
+    ADD_FAILURE() << "cannot write " << path << ": " << out->geterror();
+    return false;
+  }
+  return true;
+}
+
 bool write_constant_image(const std::filesystem::path& path, int width, int height,
                           const std::vector<float>& texel, OIIO::TypeDesc file_type,
                           const std::vector<OIIO::ParamValue>& attributes) {

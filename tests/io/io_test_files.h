@@ -34,6 +34,10 @@ bool write_image(const std::filesystem::path& path, int width, int height, int c
                  const std::vector<float>& pixels, OIIO::TypeDesc file_type = OIIO::TypeDesc::FLOAT,
                  const std::vector<OIIO::ParamValue>& attributes = {});
 
+// A float image whose channels carry `names` (e.g. {"Y", "A"}), every texel set to `texel`.
+bool write_named_constant_image(const std::filesystem::path& path, int width, int height,
+                                const std::vector<std::string>& names, const std::vector<float>& texel);
+
 // A width x height image with every texel set to `texel` (its size is the channel count).
 bool write_constant_image(const std::filesystem::path& path, int width, int height,
                           const std::vector<float>& texel, OIIO::TypeDesc file_type = OIIO::TypeDesc::FLOAT,

@@ -28,13 +28,15 @@ ShDocument sample_document() {
   doc.source = {{"sky.exr"}, {std::string(64, 'a')}, Layout::Equirect, 1024, 512};
   doc.method = {SamplingMethod::MonteCarlo, 4096, 7};  // a seed other than the default
   doc.intensity = 0.1;
-  for (auto& channel : doc.radiance.c)
+  for (auto& channel : doc.sh.radiance.c)
     for (double& v : channel) v = coefficient(rng);
-  doc.unity_form = radiance_to_unity_form(doc.radiance);
-  doc.diagnostics.nonfinite_texels = 2;
-  doc.diagnostics.negative_texels = 12;
-  doc.diagnostics.ignored_channels = 1;
-  for (int c = 0; c < kChannelCount; ++c) doc.diagnostics.min_e_over_pi[c] = {-0.125 * c, {0.0, -1.0, 0.0}};
+  doc.sh.unity_form = radiance_to_unity_form(doc.sh.radiance);
+  doc.sh.unity_sh = to_unity_sh(doc.sh.unity_form);  // the finish stage packs; the writer only copies
+  doc.sh.shader = to_shader_vectors(doc.sh.unity_form);
+  doc.texels.nonfinite_texels = 2;
+  doc.texels.negative_texels = 12;
+  doc.reading.ignored_channels = 1;
+  for (int c = 0; c < kChannelCount; ++c) doc.sh.min_e_over_pi[c] = {-0.125 * c, {0.0, -1.0, 0.0}};
   return doc;
 }
 
@@ -86,11 +88,11 @@ TEST(JsonWriter, NumbersReadBackExactly) {
   // the text gives the very same bits.
   const ShDocument doc = sample_document();
   const Json j = Json::parse(to_json(doc));
-  const UnitySphericalHarmonicsL2 floats = to_unity_sh(doc.unity_form);
-  const UnityShaderVectors vectors = to_shader_vectors(doc.unity_form);
+  const UnitySphericalHarmonicsL2 floats = to_unity_sh(doc.sh.unity_form);
+  const UnityShaderVectors vectors = to_shader_vectors(doc.sh.unity_form);
   for (int c = 0; c < kChannelCount; ++c) {
     for (int i = 0; i < kShCount; ++i) {
-      EXPECT_EQ(j["radiance_sh"][c][i].get<double>(), doc.radiance.c[c][i]) << "c=" << c << " i=" << i;
+      EXPECT_EQ(j["radiance_sh"][c][i].get<double>(), doc.sh.radiance.c[c][i]) << "c=" << c << " i=" << i;
       EXPECT_EQ(j["sphericalHarmonicsL2"][c][i].get<double>(), static_cast<double>(floats[c][i]))
           << "c=" << c << " i=" << i;
     }
@@ -109,9 +111,9 @@ TEST(JsonRoundTrip, ReaderReturnsWhatTheWriterWrote) {
   ShJsonContent content;
   const IoStatus st = read_sh_json(dir / "out.json", content);
   ASSERT_TRUE(st.ok()) << st.message;
-  EXPECT_EQ(content.radiance, doc.radiance);
-  EXPECT_EQ(content.unity_sh, to_unity_sh(doc.unity_form));
-  const UnityShaderVectors want = to_shader_vectors(doc.unity_form);
+  EXPECT_EQ(content.radiance, doc.sh.radiance);
+  EXPECT_EQ(content.unity_sh, to_unity_sh(doc.sh.unity_form));
+  const UnityShaderVectors want = to_shader_vectors(doc.sh.unity_form);
   EXPECT_EQ(content.shader.SHAr, want.SHAr);
   EXPECT_EQ(content.shader.SHAg, want.SHAg);
   EXPECT_EQ(content.shader.SHAb, want.SHAb);

@@ -1,4 +1,4 @@
-// Reading every layout from files (env_map.h, convert.h): crosses, strips and faces through
+// Reading every layout from files (map_source.h, convert.h): crosses, strips and faces through
 // project_cube, the sphere maps through project_sphere_map, the cube frames; and the
 // sources: EXR parts and layers (--layer), data windows smaller than the display window,
 // chromaticities and --colorspace.
@@ -17,9 +17,9 @@
 
 #include "io_test_files.h"
 #include "shpack/cube_layout.h"
-#include "shpack/io/colorspace.h"
+#include "shpack/colorspace.h"
 #include "shpack/io/convert.h"
-#include "shpack/io/env_map.h"
+#include "shpack/io/map_source.h"
 #include "shpack/project_cube.h"
 #include "shpack/project_sphere_map.h"
 
@@ -39,10 +39,20 @@ std::vector<float> random_pixels(std::size_t texels, std::uint64_t seed) {
   return p;
 }
 
-EnvMapProjection project(const fs::path& path, EnvMapOptions options = {}) {
-  EnvMapProjection out;
-  const IoStatus st = project_env_map(path, options, out);
+// What the source held and the radiance projected from it. With the default settings the
+// finish stage applies intensity 1, no rotation and no window: the projector's radiance up to
+// exact operations.
+struct Projection {
+  SourceInfo info;
+  ShL2 radiance;
+};
+
+Projection project(const fs::path& path, const ConvertSettings& settings = {}) {
+  Projection out;
+  Conversion conversion;
+  const IoStatus st = convert_file(path, settings, conversion, &out.info);
   EXPECT_TRUE(st.ok()) << st.message;
+  out.radiance = conversion.sh.radiance;
   return out;
 }
 
@@ -70,7 +80,7 @@ TEST(Layouts, CubeImagesAreDetectedAndProjectedAsTheirFaces) {
     const std::vector<float> pixels = random_pixels(std::size_t{w} * h, 7 + c.columns);
     const fs::path path = dir / (std::string(layout_name(c.layout)) + ".exr");
     ASSERT_TRUE(write_image(path, static_cast<int>(w), static_cast<int>(h), 3, pixels));
-    const EnvMapProjection p = project(path);  // auto
+    const Projection p = project(path);  // auto
     EXPECT_EQ(p.info.layout, c.layout) << layout_name(c.layout);
     std::array<ImageView, kCubeFaceCount> faces;
     ASSERT_TRUE(cube_face_views(make_view(pixels.data(), w, h, 3), c.core, faces).ok());
@@ -85,17 +95,17 @@ TEST(Layouts, SquareImagesNeedTheirLayoutNamed) {
   const std::uint32_t n = 12;
   const std::vector<float> pixels = random_pixels(std::size_t{n} * n, 3);
   ASSERT_TRUE(write_image(dir / "sq.exr", n, n, 3, pixels));
-  EnvMapProjection p;
-  const IoStatus st = project_env_map(dir / "sq.exr", {}, p);
+  Conversion p;
+  const IoStatus st = convert_file(dir / "sq.exr", {}, p);
   EXPECT_EQ(st.code, IoErrc::UnknownLayout);
   EXPECT_EQ(st.message, (dir / "sq.exr").string() +
                             ": the layout of a 12x12 image is ambiguous: it fits octahedral, angular and mirrorball");
   for (const auto& [layout, map] : {std::pair{Layout::Octahedral, SphereMap::Octahedral},
                                     std::pair{Layout::Angular, SphereMap::Angular},
                                     std::pair{Layout::MirrorBall, SphereMap::MirrorBall}}) {
-    EnvMapOptions options;
-    options.layout = layout;
-    const EnvMapProjection got = project(dir / "sq.exr", options);
+    ConvertSettings options;
+    options.source.layout = layout;
+    const Projection got = project(dir / "sq.exr", options);
     EXPECT_EQ(got.info.layout, layout);
     ShL2 want;
     ASSERT_TRUE(project_sphere_map(make_view(pixels.data(), n, n, 3), map, {}, want).ok());
@@ -106,15 +116,15 @@ TEST(Layouts, SquareImagesNeedTheirLayoutNamed) {
 TEST(Layouts, AWrongShapeSaysWhatWouldFit) {
   const ScratchDir dir;
   ASSERT_TRUE(shpack_io_test::write_constant_image(dir / "wide.exr", 16, 8, {1, 1, 1}));
-  EnvMapOptions cross;
-  cross.layout = Layout::HorizontalCross;
-  EnvMapProjection p;
-  const IoStatus st = project_env_map(dir / "wide.exr", cross, p);
+  ConvertSettings cross;
+  cross.source.layout = Layout::HorizontalCross;
+  Conversion p;
+  const IoStatus st = convert_file(dir / "wide.exr", cross, p);
   EXPECT_EQ(st.code, IoErrc::UnknownLayout);
   EXPECT_EQ(st.message, (dir / "wide.exr").string() + ": a 16x8 image is not a hcross (4N x 3N); its shape fits equirect");
   EXPECT_EQ(st.message.find('\n'), std::string::npos);
-  cross.layout = Layout::Angular;
-  EXPECT_EQ(project_env_map(dir / "wide.exr", cross, p).message,
+  cross.source.layout = Layout::Angular;
+  EXPECT_EQ(convert_file(dir / "wide.exr", cross, p).message,
             (dir / "wide.exr").string() + ": a 16x8 image is not an angular (N x N); its shape fits equirect");
 }
 
@@ -138,9 +148,9 @@ TEST(Layouts, TheCubeFrameTurnsTheFaces) {
       for (std::uint32_t x = n / 2 - 1; x <= n / 2; ++x)
         pixels[3 * ((m.cell_y * n + y) * 4 * n + m.cell_x * n + x)] = 100.0f;  // red: the face's 4 centre texels
     ASSERT_TRUE(write_image(dir / "cross.exr", 4 * n, 3 * n, 3, pixels));
-    EnvMapOptions options;
-    options.cube_frame = m.frame;
-    const EnvMapProjection p = project(dir / "cross.exr", options);
+    ConvertSettings options;
+    options.source.cube_frame = m.frame;
+    const Projection p = project(dir / "cross.exr", options);
     const std::array<double, 3> l1 = {p.radiance.c[0][3], p.radiance.c[0][1], p.radiance.c[0][2]};
     const double norm = std::hypot(l1[0], l1[1], l1[2]);
     for (int k = 0; k < 3; ++k)
@@ -149,10 +159,10 @@ TEST(Layouts, TheCubeFrameTurnsTheFaces) {
   }
   // The frame means nothing to an equirect map: refused rather than ignored.
   ASSERT_TRUE(shpack_io_test::write_constant_image(dir / "sky.exr", 8, 4, {1, 1, 1}));
-  EnvMapOptions gl;
-  gl.cube_frame = CubeFrame::Gl;
-  EnvMapProjection p;
-  EXPECT_EQ(project_env_map(dir / "sky.exr", gl, p).code, IoErrc::InvalidArgument);
+  ConvertSettings gl;
+  gl.source.cube_frame = CubeFrame::Gl;
+  Conversion p;
+  EXPECT_EQ(convert_file(dir / "sky.exr", gl, p).code, IoErrc::InvalidArgument);
 }
 
 TEST(Layouts, NaNInACrossIsLocatedInTheImage) {
@@ -162,8 +172,8 @@ TEST(Layouts, NaNInACrossIsLocatedInTheImage) {
   pixels[3 * ((3 * n + 1) * 3 * n + n + 2) + 1] = std::numeric_limits<float>::quiet_NaN();  // -Z cell, upside down
   pixels[3 * (0 * 3 * n + 0)] = std::numeric_limits<float>::quiet_NaN();  // an unused cell: never read
   ASSERT_TRUE(write_image(dir / "v.exr", 3 * n, 4 * n, 3, pixels));
-  EnvMapProjection p;
-  const IoStatus st = project_env_map(dir / "v.exr", {}, p);
+  Conversion p;
+  const IoStatus st = convert_file(dir / "v.exr", {}, p);
   EXPECT_EQ(st.code, IoErrc::NonFiniteTexel);
   EXPECT_EQ(st.message, (dir / "v.exr").string() + ": 1 NaN/Inf texels (first at x=6, y=13)");
 }
@@ -193,7 +203,7 @@ TEST(Layouts, SixFacesGiveTheStripsProjection) {
   ShDocument faces, one;
   ASSERT_TRUE(convert_cube_faces(paths, settings, faces).ok());
   ASSERT_TRUE(convert_env_map(dir / "strip.exr", settings, one).ok());
-  expect_same(faces.radiance, one.radiance, "faces vs strip");
+  expect_same(faces.sh.radiance, one.sh.radiance, "faces vs strip");
   EXPECT_EQ(faces.source.layout, Layout::Faces);
   EXPECT_EQ(faces.source.files, (std::vector<std::string>{"px.exr", "nx.exr", "py.exr", "ny.exr", "pz.exr", "nz.exr"}));
   EXPECT_EQ(faces.source.sha256.size(), 6u);
@@ -247,13 +257,13 @@ TEST(Sources, APartIsChosenByName) {
   b.attribute("oiio:subimagename", "sky");
   const std::vector<float> pa(3 * w * h, 1.0f), pb(3 * w * h, 5.0f);
   write_parts(dir / "parts.exr", {a, b}, {pa, pb});
-  EnvMapOptions options;
+  ConvertSettings options;
   EXPECT_NEAR(project(dir / "parts.exr", options).radiance.c[0][0], 2.0 * std::sqrt(std::numbers::pi), 1e-13);
-  options.layer = "sky";
+  options.source.layer = "sky";
   EXPECT_NEAR(project(dir / "parts.exr", options).radiance.c[0][0], 10.0 * std::sqrt(std::numbers::pi), 1e-12);
-  options.layer = "fog";
-  EnvMapProjection p;
-  const IoStatus st = project_env_map(dir / "parts.exr", options, p);
+  options.source.layer = "fog";
+  Conversion p;
+  const IoStatus st = convert_file(dir / "parts.exr", options, p);
   EXPECT_EQ(st.code, IoErrc::Unsupported);
   EXPECT_EQ(st.message, (dir / "parts.exr").string() + ": no layer 'fog' (its layers are beauty, sky)");
 }
@@ -268,17 +278,17 @@ TEST(Sources, AChannelLayerIsChosenByName) {
   std::vector<float> pixels;
   for (int t = 0; t < w * h; ++t) pixels.insert(pixels.end(), {3, 2, 1, 30, 20, 10});
   write_parts(dir / "layers.exr", {spec}, {pixels});
-  EnvMapOptions options;
-  options.layer = "specular";
-  const EnvMapProjection p = project(dir / "layers.exr", options);
+  ConvertSettings options;
+  options.source.layer = "specular";
+  const Projection p = project(dir / "layers.exr", options);
   const double l00 = 2.0 * std::sqrt(std::numbers::pi);
   EXPECT_NEAR(p.radiance.c[0][0], 10 * l00, 1e-12);
   EXPECT_NEAR(p.radiance.c[1][0], 20 * l00, 1e-12);
   EXPECT_NEAR(p.radiance.c[2][0], 30 * l00, 1e-12);
   EXPECT_EQ(p.info.ignored_channels, 3u);
   // Without --layer, a file of layers only is refused, naming them.
-  EnvMapProjection q;
-  const IoStatus st = project_env_map(dir / "layers.exr", {}, q);
+  Conversion q;
+  const IoStatus st = convert_file(dir / "layers.exr", {}, q);
   EXPECT_EQ(st.code, IoErrc::Unsupported);
   EXPECT_EQ(st.message, (dir / "layers.exr").string() +
                             ": the image has no R, G, B or Y channels; its layers are diffuse, specular "
@@ -305,7 +315,7 @@ TEST(Sources, OutsideTheDataWindowIsBlack) {
     for (int x = 0; x < 8; ++x)
       for (int c = 0; c < 3; ++c) full[3 * ((y + 2) * w + x + 4) + c] = data[3 * (y * 8 + x) + c];
   ASSERT_TRUE(write_image(dir / "full.exr", w, h, 3, full));
-  const EnvMapProjection a = project(dir / "window.exr"), b = project(dir / "full.exr");
+  const Projection a = project(dir / "window.exr"), b = project(dir / "full.exr");
   EXPECT_EQ(a.info.width, static_cast<std::uint32_t>(w));
   EXPECT_EQ(a.info.height, static_cast<std::uint32_t>(h));
   expect_same(a.radiance, b.radiance, "data window");
@@ -347,15 +357,15 @@ TEST(Sources, ChromaticitiesAreConvertedToRec709) {
   ASSERT_TRUE(rgb_to_rec709_matrix(ap1, want, problem));
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) EXPECT_NEAR((*tagged.colour_matrix)[r][c], want[r][c], 1e-6) << r << "," << c;
-  const ShL2 mixed = mix_channels(plain.radiance, *tagged.colour_matrix);
+  const ShL2 mixed = mix_channels(plain.sh.radiance, *tagged.colour_matrix);
   for (int c = 0; c < 3; ++c)
     for (int i = 0; i < kShCount; ++i)
-      EXPECT_NEAR(tagged.radiance.c[c][i], mixed.c[c][i], 1e-14 * 8) << "c=" << c << " i=" << i;
+      EXPECT_NEAR(tagged.sh.radiance.c[c][i], mixed.c[c][i], 1e-14 * 8) << "c=" << c << " i=" << i;
   // --colorspace names the primaries whatever the file says.
-  settings.colorspace = ColorSpace::LinearRec709;
+  settings.source.colorspace = ColorSpace::LinearRec709;
   ASSERT_TRUE(convert_env_map(dir / "ap1.exr", settings, ignored).ok());
-  expect_same(ignored.radiance, plain.radiance, "--colorspace linear-rec709");
-  settings.colorspace = ColorSpace::AcesCg;
+  expect_same(ignored.sh.radiance, plain.sh.radiance, "--colorspace linear-rec709");
+  settings.source.colorspace = ColorSpace::AcesCg;
   ASSERT_TRUE(convert_env_map(dir / "plain.exr", settings, forced).ok());
   EXPECT_EQ(forced.reading.colorspace, "acescg");
 }

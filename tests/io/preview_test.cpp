@@ -19,6 +19,7 @@
 #include "shpack/io/json_reader.h"
 #include "shpack/io/json_writer.h"
 #include "shpack/io/preview.h"
+#include "shpack/unity_pack.h"
 
 namespace shpack::io {
 namespace {
@@ -44,14 +45,16 @@ ShJsonContent directional_document(const ScratchDir& dir) {
   ShDocument doc;
   doc.source = {{"sun.exr"}, {std::string(64, '0')}, Layout::Equirect, 64, 32};
   const double k0 = 0.5 / std::sqrt(kPi), k1 = std::sqrt(3.0) * k0, k20 = std::sqrt(5.0) / 4 / std::sqrt(kPi);
-  for (auto& channel : doc.radiance.c) {
+  for (auto& channel : doc.sh.radiance.c) {
     channel = {};
     channel[0] = kE * k0;
     channel[1] = kE * k1;            // P_1 = y = 1
     channel[6] = kE * k20 * (0 - 1); // P_6 = 3z^2 - 1 = -1
     channel[8] = kE * std::sqrt(15.0) / 4 / std::sqrt(kPi) * (0 - 1);  // P_8 = x^2 - y^2 = -1
   }
-  doc.unity_form = radiance_to_unity_form(doc.radiance);
+  doc.sh.unity_form = radiance_to_unity_form(doc.sh.radiance);
+  doc.sh.unity_sh = to_unity_sh(doc.sh.unity_form);  // packed as the finish stage packs (pipeline.h)
+  doc.sh.shader = to_shader_vectors(doc.sh.unity_form);
   EXPECT_TRUE(write_file_atomically(dir / "sun.json", to_json(doc)).ok());
   ShJsonContent content;
   EXPECT_TRUE(read_sh_json(dir / "sun.json", content).ok());

@@ -1,4 +1,4 @@
-#include "shpack/io/srgb.h"
+#include "shpack/srgb.h"
 
 #include <gtest/gtest.h>
 

@@ -6,12 +6,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <numbers>
 #include <string>
 #include <tuple>
 #include <vector>
 
+#include "io_test_files.h"
 #include "shpack/convolution.h"
 #include "shpack/sh_minimum.h"
 #include "shpack/study/accuracy.h"
@@ -158,6 +161,32 @@ TEST(StudyInputs, SyntheticMapsAreEquirectAndPositive) {
   EXPECT_GT(sun_texels, 1.0);
   EXPECT_LT(sun_texels, 3.0);
   EXPECT_EQ(load_study_input("synthetic:nothing", image).code, io::IoErrc::InvalidArgument);
+}
+
+TEST(StudyInputs, BundledMapsAreTheDataVariableOrTheInstalledFolder) {
+  namespace fs = std::filesystem;
+  const shpack_io_test::ScratchDir dir;
+  const fs::path exe = dir / "bin" / "shpack";  // need not exist: only its folder counts
+  EXPECT_EQ(find_bundled_maps(nullptr, exe), fs::path());  // nothing installed, no variable
+  EXPECT_EQ(find_bundled_maps(nullptr, {}), fs::path());
+  const fs::path installed = dir / "share" / "shpack" / "hdri";
+  fs::create_directories(installed);
+  EXPECT_EQ(find_bundled_maps(nullptr, exe), installed);
+  EXPECT_EQ(find_bundled_maps("", exe), installed);
+  EXPECT_EQ(find_bundled_maps((dir / "missing").c_str(), exe), installed);  // not a folder
+  const fs::path own = dir / "maps";
+  fs::create_directories(own);
+  EXPECT_EQ(find_bundled_maps(own.c_str(), exe), own);  // the variable wins
+  EXPECT_EQ(find_bundled_maps(own.c_str(), {}), own);
+
+  // default_inputs: the folder's *.exr sorted by name, then the synthetic maps; a missing or
+  // empty folder gives the synthetic maps alone.
+  for (const char* name : {"b.exr", "a.exr", "notes.txt"}) std::ofstream(own / name) << "x";
+  std::vector<std::string> expected = {(own / "a.exr").string(), (own / "b.exr").string()};
+  for (const std::string& name : synthetic_map_names()) expected.push_back(name);
+  EXPECT_EQ(default_inputs(own), expected);
+  EXPECT_EQ(default_inputs(installed), synthetic_map_names());
+  EXPECT_EQ(default_inputs(fs::path()), synthetic_map_names());
 }
 
 TEST(StudyRun, ExactIsTheReferenceAndEveryRecordIsFilled) {

@@ -1,4 +1,4 @@
-// irradiance_end_to_end_test.cpp - the headline property (issue 3): for band-limited
+// irradiance_end_to_end_test.cpp - the headline property: for band-limited
 // lighting written to an EXR file and read back, Unity's shader evaluated on shpack's
 // packed float vectors equals the brute-force E(n)/pi of that image, at 256 well-spread
 // normals, within a tolerance derived from three separately checked parts:

@@ -67,7 +67,7 @@ TEST_P(RealMap, ProjectionPackingAndTruncation) {
       EXPECT_NEAR(oracle.c[c][i], radiance.c[c][i], tol) << "(A) " << name << " c=" << c << " i=" << i;
     worst_a = std::max(worst_a, channel_max_diff(radiance, oracle, c) / channel_norm(oracle, c));
   }
-  EXPECT_LE(worst_a, 1e-10) << name;  // the criterion for the real maps
+  EXPECT_LE(worst_a, 1e-10) << name;  // the required agreement for the real maps
 
   const ShL2 unity = shpack::radiance_to_unity_form(radiance);
   const shpack::UnityShaderVectors vectors = shpack::to_shader_vectors(unity);

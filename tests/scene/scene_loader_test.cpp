@@ -10,15 +10,12 @@
 #include <string>
 
 #include "scene/scene_files.h"
-#include "shpack/io/scene_loader.h"
+#include "shpack/scene/scene_loader.h"
 
-namespace shpack::io {
+namespace shpack::scene {
 namespace {
 
 using shpack_test::write_scene;
-
-// The scratch folder of this process goes when its tests end.
-testing::Environment* const kScratchCleanup = testing::AddGlobalTestEnvironment(new shpack_test::ScratchCleanup);
 
 TEST(SceneLoader, ReadsAGridLightsGeometryAndEffects) {
   const auto path = write_scene("good.json", R"({
@@ -36,7 +33,7 @@ TEST(SceneLoader, ReadsAGridLightsGeometryAndEffects) {
     "settings": {"seed": 7, "shadow_samples": 64}
   })");
   Scene scene;
-  const IoStatus st = load_scene(path, scene);
+  const io::IoStatus st = load_scene(path, scene);
   ASSERT_TRUE(st.ok()) << st.message;
   ASSERT_EQ(scene.probes.size(), 6u);
   // x fastest, then y; both ends included.
@@ -75,7 +72,7 @@ TEST_P(SceneLoaderErrors, NameTheFileAndTheJsonPath) {
   const auto path = write_scene(std::string(bad.name) + ".json", bad.json);
   Scene scene;
   scene.probes.push_back({9, 9, 9});  // must survive a failed load
-  const IoStatus st = load_scene(path, scene);
+  const io::IoStatus st = load_scene(path, scene);
   ASSERT_FALSE(st.ok()) << bad.name;
   EXPECT_EQ(st.message, path.string() + ": " + bad.message) << bad.name;
   ASSERT_EQ(scene.probes.size(), 1u) << bad.name << ": the output is untouched";
@@ -142,7 +139,7 @@ TEST(SceneLoader, MissingReferencedFilesAreNamed) {
   const auto path = write_scene("missing_map.json", R"({"probes": [[0, 0, 0]], "effects": ["environment"],
     "environment": {"type": "map", "path": "no_such_sky.exr"}})");
   Scene scene;
-  const IoStatus st = load_scene(path, scene);
+  const io::IoStatus st = load_scene(path, scene);
   ASSERT_FALSE(st.ok());
   const std::string map = (path.parent_path() / "no_such_sky.exr").string();
   EXPECT_EQ(st.message, path.string() + ": environment.path: " + map + ": no such file");
@@ -153,7 +150,7 @@ TEST(SceneLoader, ReadsAnObjMesh) {
   const auto path = write_scene("mesh.json", R"({"probes": [[0, 1, 0]], "effects": [],
     "geometry": [{"type": "mesh", "path": "quad.obj", "position": [0, 2, 0], "scale": 2, "mirror_z": true}]})");
   Scene scene;
-  const IoStatus st = load_scene(path, scene);
+  const io::IoStatus st = load_scene(path, scene);
   ASSERT_TRUE(st.ok()) << st.message;
   ASSERT_EQ(scene.geometry.size(), 1u);
   EXPECT_EQ(scene.geometry[0].indices.size(), 6u) << "the quad is triangulated";
@@ -164,9 +161,9 @@ TEST(SceneLoader, ReadsAnObjMesh) {
 }
 
 }  // namespace
-}  // namespace shpack::io
+}  // namespace shpack::scene
 
-namespace shpack::io {
+namespace shpack::scene {
 namespace {
 
 // A buffer of one triangle: 3 float VEC3 positions (36 bytes), then 3 uint16 indices (6 bytes,
@@ -178,21 +175,6 @@ std::string triangle_buffer() {
   std::memcpy(bytes.data(), p, 36);
   std::memcpy(bytes.data() + 36, i, 8);
   return bytes;
-}
-
-std::string base64(const std::string& bytes) {
-  static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (std::size_t at = 0; at < bytes.size(); at += 3) {
-    std::uint32_t v = static_cast<unsigned char>(bytes[at]) << 16;
-    if (at + 1 < bytes.size()) v |= static_cast<unsigned char>(bytes[at + 1]) << 8;
-    if (at + 2 < bytes.size()) v |= static_cast<unsigned char>(bytes[at + 2]);
-    out += k[(v >> 18) & 63];
-    out += k[(v >> 12) & 63];
-    out += at + 1 < bytes.size() ? k[(v >> 6) & 63] : '=';
-    out += at + 2 < bytes.size() ? k[v & 63] : '=';
-  }
-  return out;
 }
 
 // The glTF document around the buffer: a parent node moved by +2 in x holding a child that
@@ -227,11 +209,11 @@ void expect_turned_triangle(const Scene& scene, const std::string& what) {
 TEST(SceneLoader, ReadsGltfWithDataUriAndNodeTransforms) {
   const std::string bytes = triangle_buffer();
   shpack_test::write_scene("tri.gltf", gltf_json(R"({"byteLength": 44, "uri": "data:application/octet-stream;base64,)" +
-                                                 base64(bytes) + R"("})"));
+                                                 shpack_test::base64(bytes) + R"("})"));
   const auto path = shpack_test::write_scene("gltf.json", R"({"probes": [[0, 1, 0]], "effects": [],
     "geometry": [{"type": "mesh", "path": "tri.gltf"}]})");
   Scene scene;
-  const IoStatus st = load_scene(path, scene);
+  const io::IoStatus st = load_scene(path, scene);
   ASSERT_TRUE(st.ok()) << st.message;
   expect_turned_triangle(scene, ".gltf");
 }
@@ -248,16 +230,16 @@ TEST(SceneLoader, ReadsGlbWithItsBinaryChunk) {
   const auto path = shpack_test::write_scene("glb.json", R"({"probes": [[0, 1, 0]], "effects": [],
     "geometry": [{"type": "mesh", "path": "tri.glb"}]})");
   Scene scene;
-  const IoStatus st = load_scene(path, scene);
+  const io::IoStatus st = load_scene(path, scene);
   ASSERT_TRUE(st.ok()) << st.message;
   expect_turned_triangle(scene, ".glb");
   // A truncated file is refused with the file and the JSON path named.
   shpack_test::write_scene("tri.glb", glb.substr(0, 30));
-  const IoStatus bad = load_scene(path, scene);
+  const io::IoStatus bad = load_scene(path, scene);
   ASSERT_FALSE(bad.ok());
   EXPECT_NE(bad.message.find("geometry[0].path: " + (path.parent_path() / "tri.glb").string() + ": "), std::string::npos)
       << bad.message;
 }
 
 }  // namespace
-}  // namespace shpack::io
+}  // namespace shpack::scene

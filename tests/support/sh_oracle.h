@@ -13,7 +13,7 @@
 // with theta the polar angle from +Z and phi = atan2(y, x), x, y, z being Unity's world
 // axes. With this choice index l(l+1)+m reproduces Unity's table of polynomials
 // (1, y, z, x, xy, yz, 3z^2-1, xz, x^2-y^2 times k_i) with the same signs; the tests in
-// unit/basis_test.cpp check it against shpack's hard-coded polynomials.
+// sh/basis_test.cpp check it against shpack's hard-coded polynomials.
 #pragma once
 
 #include <array>

@@ -10,7 +10,7 @@
 
 #include "shpack/conventions.h"
 #include "shpack/io/image_file.h"
-#include "shpack/io/layout.h"
+#include "shpack/layout.h"
 
 namespace shpack::study {
 namespace {
@@ -113,9 +113,20 @@ std::vector<std::string> synthetic_map_names() {
   return names;
 }
 
+fs::path find_bundled_maps(const char* data_dir, const fs::path& executable) {
+  std::error_code ec;
+  if (data_dir != nullptr && *data_dir != '\0' && fs::is_directory(data_dir, ec)) return data_dir;
+  if (!executable.empty()) {
+    // Lexically: /proc/self/exe has no symbolic links left to resolve.
+    const fs::path installed = (executable.parent_path() / ".." / "share" / "shpack" / "hdri").lexically_normal();
+    if (fs::is_directory(installed, ec)) return installed;
+  }
+  return {};
+}
+
 std::vector<std::string> default_inputs(const fs::path& bundled_dir) {
   std::vector<std::string> inputs;
-  std::error_code ec;
+  std::error_code ec;  // an empty or missing folder: no maps
   for (const fs::directory_entry& entry : fs::directory_iterator(bundled_dir, ec))
     if (entry.path().extension() == ".exr") inputs.push_back(entry.path().string());
   std::sort(inputs.begin(), inputs.end());
@@ -137,7 +148,7 @@ io::IoStatus load_study_input(const std::string& input, StudyImage& out) {
   }
   io::ImageFile file;
   if (io::IoStatus st = io::read_image_file(input, file); !st.ok()) return st;
-  if (io::resolve_layout(io::Layout::Auto, file.width, file.height) != io::Layout::Equirect) {
+  if (shpack::resolve_layout(shpack::Layout::Auto, file.width, file.height) != shpack::Layout::Equirect) {
     return io::IoStatus::error(io::IoErrc::UnknownLayout, input,
                                "a " + std::to_string(file.width) + "x" + std::to_string(file.height) +
                                    " image is not an equirect map (2:1); bench reads those only");

@@ -97,7 +97,7 @@ void run_pass(std::size_t count, unsigned threads, const char* name, const BakeO
 }
 
 struct Engine {
-  const io::Scene& scene;
+  const scene::Scene& scene;
   const BakeOptions& options;
   unsigned threads;
   std::vector<ShL2> total;                             // per probe, the parts summed in pass order
@@ -109,7 +109,7 @@ struct Engine {
   // rounding 6e-8) and its sphere roots lose more near tangency; 1e-4 clears both.
   static constexpr double epsilon = 1e-4;
 
-  Engine(const io::Scene& s, const BakeOptions& o, unsigned t) : scene(s), options(o), threads(t) {}
+  Engine(const scene::Scene& s, const BakeOptions& o, unsigned t) : scene(s), options(o), threads(t) {}
 
   // Adds one probe's part of one effect to its total (passes run in a fixed order, so every
   // total is summed in the same order) and keeps it if asked.
@@ -121,7 +121,7 @@ struct Engine {
   std::uint64_t seed() const { return scene.settings.seed; }
 
   IoStatus error_at(std::size_t probe, std::size_t light, const Status& st) const {
-    const std::string where = io::probe_label(scene, probe);
+    const std::string where = scene::probe_label(scene, probe);
     if (st.code == Errc::ProbeInsideLight)
       return IoStatus::error(IoErrc::BadDocument, scene.file,
                              where + " is inside " + scene.lights[light].label + " (" + st.what + ")");
@@ -159,7 +159,7 @@ struct Engine {
       ShL2 out;
       LightSamples ls;
       for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-        const io::SceneLight& light = scene.lights[l];
+        const scene::SceneLight& light = scene.lights[l];
         const bool any = std::any_of(bounds.begin(), bounds.end(),
                                      [&](const Bounds& b) { return can_shadow(light, p, b); });
         if (!any) {
@@ -294,7 +294,7 @@ struct Engine {
           const double eps = epsilon * (1.0 + std::max({std::fabs(x.x), std::fabs(x.y), std::fabs(x.z)}));
           // Next-event estimation: (albedo / pi) E_light(x), albedo already in beta.
           if (scene.effects.direct)
-            for (const io::SceneLight& light : scene.lights) {
+            for (const scene::SceneLight& light : scene.lights) {
               const Rgb e = light_irradiance(light, x, normal, eps, *tracer, rng, n.rays);
               for (int c = 0; c < 3; ++c) radiance[c] += beta[c] * e[c] / std::numbers::pi;
             }
@@ -306,7 +306,7 @@ struct Engine {
             Rgb far{0, 0, 0};
             if (scene.effects.environment) far = environment.radiance(w);
             if (scene.effects.direct)
-              for (const io::SceneLight& light : scene.lights)
+              for (const scene::SceneLight& light : scene.lights)
                 if (is_distant(light)) {
                   const Rgb d = distant_radiance(light, w);
                   for (int c = 0; c < 3; ++c) far[c] += d[c];
@@ -331,9 +331,9 @@ struct Engine {
     const auto start = Clock::now();
     tracer = std::make_unique<Tracer>(scene.geometry);
     if (!tracer->ok()) return IoStatus::error(IoErrc::Core, scene.file, tracer->error());
-    for (const io::SceneShape& shape : scene.geometry) {
+    for (const scene::SceneShape& shape : scene.geometry) {
       bounds.push_back(shape_bounds(shape));
-      if (shape.type == io::ShapeType::Sphere)
+      if (shape.type == scene::ShapeType::Sphere)
         ++cost.spheres;
       else
         cost.triangles += shape.indices.size() / 3;
@@ -358,7 +358,7 @@ const char* effect_name(Effect effect) noexcept {
   return "unknown";
 }
 
-IoStatus bake(const io::Scene& scene, const BakeOptions& options, BakeResult& out) {
+IoStatus bake(const scene::Scene& scene, const BakeOptions& options, BakeResult& out) {
   try {
     const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
     Engine engine(scene, options, threads);
@@ -367,7 +367,7 @@ IoStatus bake(const io::Scene& scene, const BakeOptions& options, BakeResult& ou
     BakeResult result;
     auto& costs = result.costs;
     const auto cost = [&](Effect e) -> EffectCost& { return costs[static_cast<std::size_t>(e)]; };
-    const io::SceneEffects& fx = scene.effects;
+    const scene::SceneEffects& fx = scene.effects;
     if (fx.direct)
       if (IoStatus st = engine.direct(cost(Effect::Direct)); !st.ok()) return st;
     if (fx.environment) {

@@ -4,28 +4,14 @@
 
 #include <cmath>
 
-#include "shpack/convolution.h"
+#include "shpack/io/sh_record_json.h"
 #include "shpack/io/version.h"
-#include "shpack/sh_minimum.h"
-#include "shpack/unity_pack.h"
+#include "shpack/pipeline.h"
 
 namespace shpack::bake {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-Json sh_json(const ShL2& sh) {
-  Json out = Json::array();
-  for (const auto& channel : sh.c) out.push_back(channel);
-  return out;
-}
-
-template <std::size_t N>
-Json floats_json(const std::array<float, N>& values) {
-  Json out = Json::array();
-  for (const float v : values) out.push_back(static_cast<double>(v));
-  return out;
-}
 
 // The inside of a JSON array, "a,b,c", of the values given (nlohmann's shortest forms).
 std::string array_items(const Json& array) {
@@ -35,22 +21,24 @@ std::string array_items(const Json& array) {
 
 }  // namespace
 
-io::IoStatus bake_to_json(const io::Scene& scene, const BakeResult& result, const BakeJsonOptions& options,
+io::IoStatus bake_to_json(const scene::Scene& scene, const BakeResult& result, const BakeJsonOptions& options,
                           std::string& json) {
   try {
     // Probes are formatted one at a time and appended as text, so memory holds the output and
     // one probe's tree, not a tree of every number.
     std::string probes, positions, flat;
     for (std::size_t k = 0; k < result.radiance.size(); ++k) {
-      ShL2 unity_form;
-      WindowResult windowed;
-      if (Status st = apply_window(radiance_to_unity_form(result.radiance[k]), options.window, unity_form, &windowed);
-          !st.ok())
-        return io::IoStatus::error(io::IoErrc::InvalidArgument, scene.file, io::probe_label(scene, k) + ": " + st.what);
-      if (!fits_unity_float32(unity_form))
-        return io::IoStatus::error(io::IoErrc::Unsupported, scene.file,
-                                   io::probe_label(scene, k) + ": too bright for Unity's float32 coefficients");
-      const UnitySphericalHarmonicsL2 unity_sh = to_unity_sh(unity_form);
+      // Each probe's SH through the finish stage (pipeline.h): the window, the float32 check,
+      // the minimum and the packing, as `convert` finishes a map.
+      FinishOptions finish;
+      finish.window = options.window;
+      FinishedSh sh;
+      if (Status st = finish_projection(result.radiance[k], finish, sh); !st.ok()) {
+        const std::string what = st.code == Errc::OutOfRange ? "too bright for Unity's float32 coefficients" : st.what;
+        return io::IoStatus::error(st.code == Errc::OutOfRange ? io::IoErrc::Unsupported : io::IoErrc::InvalidArgument,
+                                   scene.file, scene::probe_label(scene, k) + ": " + what);
+      }
+      const UnitySphericalHarmonicsL2& unity_sh = sh.unity_sh;
       const Point3& p = scene.probes[k];
       const char* separator = k == 0 ? "" : ",";
       if (options.format == BakeFormat::UnityProbes) {
@@ -64,24 +52,10 @@ io::IoStatus bake_to_json(const io::Scene& scene, const BakeResult& result, cons
       }
       Json probe;
       probe["position"] = {p.x, p.y, p.z};
-      probe["radiance_sh"] = sh_json(apply_band_factors(result.radiance[k], windowed.factors));
-      Json sh = Json::array();
-      for (const auto& channel : unity_sh) sh.push_back(floats_json(channel));
-      probe["sphericalHarmonicsL2"] = std::move(sh);
-      const UnityShaderVectors v = to_shader_vectors(unity_form);
-      probe["shader"] = {{"unity_SHAr", floats_json(v.SHAr)}, {"unity_SHAg", floats_json(v.SHAg)},
-                         {"unity_SHAb", floats_json(v.SHAb)}, {"unity_SHBr", floats_json(v.SHBr)},
-                         {"unity_SHBg", floats_json(v.SHBg)}, {"unity_SHBb", floats_json(v.SHBb)},
-                         {"unity_SHC", floats_json(v.SHC)}};
-      Json min_values = Json::array(), min_directions = Json::array();
-      for (int c = 0; c < kChannelCount; ++c) {
-        const SphereMinimum m = minimum_on_sphere(unity_form, c);
-        min_values.push_back(m.value);
-        min_directions.push_back({m.direction.x, m.direction.y, m.direction.z});
-      }
-      probe["diagnostics"] = {{"min_e_over_pi", std::move(min_values)},
-                              {"min_e_over_pi_direction", std::move(min_directions)},
-                              {"window_factors", windowed.factors}};
+      io::put_sh_values(sh, probe);
+      Json diagnostics = Json::object();
+      io::put_sh_diagnostics(sh, diagnostics);
+      probe["diagnostics"] = std::move(diagnostics);
       probes.append(separator).append("\n    ").append(probe.dump(-1, ' ', false, Json::error_handler_t::replace));
     }
     if (options.format == BakeFormat::UnityProbes) {

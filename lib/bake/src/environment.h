@@ -6,18 +6,19 @@
 
 #include "shpack/io/image_file.h"
 #include "shpack/io/io_status.h"
-#include "shpack/io/scene.h"
 #include "shpack/rotate.h"
+#include "shpack/scene/scene.h"
 #include "tracer.h"
 
 namespace shpack::bake {
 
 class EnvironmentSource {
  public:
-  // Projects the environment (an env map through project_env_map, exactly as `shpack convert`
-  // does, then intensity and rotation; a gradient sky in closed form). With `need_lookup`, an
-  // env map's pixels are also kept for radiance(). Errors name the scene file and the map.
-  io::IoStatus load(const io::Scene& scene, bool need_lookup, unsigned threads);
+  // Projects the environment (an env map through the pipeline, io/convert.h, exactly as
+  // `shpack convert` does: its colour space, intensity and rotation; a gradient or Preetham
+  // sky in closed form). With `need_lookup`, an env map's pixels are also kept for
+  // radiance(), in the same primaries. Errors name the scene file and the map.
+  io::IoStatus load(const scene::Scene& scene, bool need_lookup, unsigned threads);
 
   const ShL2& sh() const noexcept { return sh_; }
 
@@ -26,7 +27,7 @@ class EnvironmentSource {
   Rgb radiance(const Vec3d& d) const noexcept;
 
  private:
-  io::SceneEnvironment env_;
+  scene::SceneEnvironment env_;
   ShL2 sh_;
   io::ImageFile image_;
   Matrix3 rotation_{};  // R_y of the map's rotation; radiance(d) reads the map at R^T d

@@ -13,7 +13,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-using io::LightType;
+using scene::LightType;
 
 // Whether origin + t d, t in [0, t_max], meets the box [lo - grow, hi + grow] (slab test;
 // a zero component of d is an infinite slope, handled by the comparisons with infinities).
@@ -44,7 +44,7 @@ double sphere_distance(Vec3d p, Vec3d w, Vec3d c, double radius) noexcept {
 }
 
 // Uniform radiance of an extended light (lights.h's normalisations).
-Rgb extended_radiance(const io::SceneLight& light) noexcept {
+Rgb extended_radiance(const scene::SceneLight& light) noexcept {
   Rgb out = light.colour;
   double scale = 1.0;
   if (light.type == LightType::Directional) {
@@ -57,7 +57,7 @@ Rgb extended_radiance(const io::SceneLight& light) noexcept {
   return out;
 }
 
-bool is_delta(const io::SceneLight& light) noexcept {
+bool is_delta(const scene::SceneLight& light) noexcept {
   return light.type == LightType::Point || light.type == LightType::Spot ||
          (light.type == LightType::Directional && light.angular_diameter == 0) ||
          (light.type == LightType::Sphere && light.radius == 0);
@@ -90,7 +90,7 @@ void sample_cap(Vec3d d, double one_minus_cos, int wanted, Rng& rng, std::vector
 
 }  // namespace
 
-Status add_light(const io::SceneLight& light, Point3 probe, ShL2& radiance) noexcept {
+Status add_light(const scene::SceneLight& light, Point3 probe, ShL2& radiance) noexcept {
   switch (light.type) {
     case LightType::Directional:
       return add_directional_light({-light.direction.x, -light.direction.y, -light.direction.z},
@@ -111,19 +111,19 @@ Status add_light(const io::SceneLight& light, Point3 probe, ShL2& radiance) noex
   return Status::error(Errc::InvalidArgument, "unknown light type");
 }
 
-bool is_distant(const io::SceneLight& light) noexcept {
+bool is_distant(const scene::SceneLight& light) noexcept {
   return light.type == LightType::Hemisphere || light.type == LightType::Ambient;
 }
 
-Rgb distant_radiance(const io::SceneLight& light, Vec3d d) noexcept {
+Rgb distant_radiance(const scene::SceneLight& light, Vec3d d) noexcept {
   if (light.type == LightType::Ambient) return light.colour;
   if (light.type == LightType::Hemisphere) return d.y > 0 ? light.colour : light.ground;
   return {0, 0, 0};
 }
 
-Bounds shape_bounds(const io::SceneShape& shape) noexcept {
+Bounds shape_bounds(const scene::SceneShape& shape) noexcept {
   Vec3d lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
-  if (shape.type == io::ShapeType::Sphere) {
+  if (shape.type == scene::ShapeType::Sphere) {
     const Vec3d c = vec(shape.centre), r{shape.radius, shape.radius, shape.radius};
     lo = c - r;
     hi = c + r;
@@ -140,7 +140,7 @@ Bounds shape_bounds(const io::SceneShape& shape) noexcept {
   return {lo - Vec3d{pad, pad, pad}, hi + Vec3d{pad, pad, pad}};
 }
 
-bool can_shadow(const io::SceneLight& light, Vec3d probe, const Bounds& b) noexcept {
+bool can_shadow(const scene::SceneLight& light, Vec3d probe, const Bounds& b) noexcept {
   switch (light.type) {
     case LightType::Directional: {
       // The cone of half-angle a about d: within the box, no wider than tan(a) times the
@@ -167,7 +167,7 @@ bool can_shadow(const io::SceneLight& light, Vec3d probe, const Bounds& b) noexc
   return true;
 }
 
-void sample_light(const io::SceneLight& light, Vec3d from, int wanted, Rng& rng, LightSamples& out) {
+void sample_light(const scene::SceneLight& light, Vec3d from, int wanted, Rng& rng, LightSamples& out) {
   out.samples.clear();
   out.radiance = extended_radiance(light);
   if (is_delta(light)) {
@@ -230,7 +230,7 @@ void sample_light(const io::SceneLight& light, Vec3d from, int wanted, Rng& rng,
   }
 }
 
-Rgb light_irradiance(const io::SceneLight& light, Vec3d x, Vec3d n, double epsilon, const Tracer& tracer,
+Rgb light_irradiance(const scene::SceneLight& light, Vec3d x, Vec3d n, double epsilon, const Tracer& tracer,
                      Rng& rng, std::uint64_t& rays) {
   Rgb out{0, 0, 0};
   if (is_distant(light)) return out;

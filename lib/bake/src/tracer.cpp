@@ -5,7 +5,7 @@
 
 namespace shpack::bake {
 
-Tracer::Tracer(const std::vector<io::SceneShape>& geometry) {
+Tracer::Tracer(const std::vector<scene::SceneShape>& geometry) {
   device_ = rtcNewDevice(nullptr);
   if (!device_) {
     error_ = "cannot start Embree";
@@ -14,9 +14,9 @@ Tracer::Tracer(const std::vector<io::SceneShape>& geometry) {
   RTCScene scene = rtcNewScene(device_);
   rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);  // no cracks between shared triangle edges
   for (std::uint32_t s = 0; s < geometry.size(); ++s) {
-    const io::SceneShape& shape = geometry[s];
+    const scene::SceneShape& shape = geometry[s];
     RTCGeometry geom;
-    if (shape.type == io::ShapeType::Sphere) {
+    if (shape.type == scene::ShapeType::Sphere) {
       geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
       auto* v = static_cast<float*>(
           rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));

@@ -12,7 +12,7 @@
 #include <limits>
 #include <vector>
 
-#include "shpack/io/scene.h"
+#include "shpack/scene/scene.h"
 #include "shpack/vec3.h"
 
 namespace shpack::bake {
@@ -30,7 +30,7 @@ class Tracer {
  public:
   // Builds the acceleration structure over `geometry` (which must outlive the tracer).
   // `ok()` is false, with `error()` set, if Embree could not be started.
-  explicit Tracer(const std::vector<io::SceneShape>& geometry);
+  explicit Tracer(const std::vector<scene::SceneShape>& geometry);
   ~Tracer();
   Tracer(const Tracer&) = delete;
   Tracer& operator=(const Tracer&) = delete;

@@ -1,7 +1,7 @@
 // conventions.h - every geometric convention of shpack, stated once.
 //
 // Normative source: shared/docs/unity-sh-conventions.md (copied to docs/conventions.md).
-// tests/unit/conventions_test.cpp pins each statement below with a test.
+// tests/projection/conventions_test.cpp pins each statement below with a test.
 //
 // Frame. All SH that shpack emits are in Unity's world frame: LEFT-handed, +X right,
 // +Y up, +Z forward. A right-handed Y-up frame (OpenGL, three.js, glTF) maps to it by

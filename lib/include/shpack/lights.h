@@ -135,7 +135,7 @@ Status add_rect_light(const RectLight& rect, const Rgb& radiance, Point3 probe,
 // O(exp(-s N)) [5]. Here s = acosh((h^2 + |q|^2 + R^2) / (2 R |q|)) (the zeros of |X|^2):
 // N is the smallest multiple of 8 >= max(16, kDiskStripProduct / s), capped at kDiskMaxNodes,
 // so that the predicted exp(-s N) is below 1e-17 wherever the cap is not reached (probes
-// within about R/100 of the disk's rim plane); tests/scene measures the error against brute
+// within about R/100 of the disk's rim plane); tests/lights measures the error against brute
 // force. `nodes_used` and `error_estimate` (|I_N - I_{N/2}| relative to Omega, a bound on the
 // error once convergence is geometric) report it.
 inline constexpr double kDiskStripProduct = 40.0;

@@ -1,37 +1,85 @@
-// pipeline.h - from projected radiance coefficients to what a Unity user gets: the steps of
-// `shpack convert` after the projection, in its order, for callers that hold the pixels
-// themselves (the C ABI, shpack_c.h).
+// pipeline.h - the one conversion pipeline: from an environment map to what a Unity user
+// gets, in five stages. Every command and the C ABI go through it (docs/architecture.md
+// draws it), and each option is applied at exactly one stage:
 //
-//   radiance  = rotate_about_y(scaled(projected, intensity), rotate_deg)   (rotate.h)
-//   unity     = apply_window(radiance_to_unity_form(radiance), window)      (convolution.h, window.h)
-//   radiance  = apply_band_factors(radiance, the window's factors)          (both describe one function)
-//   minimum   = minimum_on_sphere(unity, c) per channel                     (sh_minimum.h)
-//
-// lib/io's convert_env_map (convert.cpp) calls it too, so a map projected through the C ABI
-// and one converted by the CLI give bit-identical numbers (pinned by tests/io/c_api_test.cpp
-// against the CLI's JSON).
+//   1. source      which pixels: file or faces, part/layer, data window, colour space and
+//                  layout, resolved once (lib/io's map source for files; the caller's views
+//                  here). Result: a MapImage and FinishOptions::colour_matrix.
+//   2. transforms  --extract-sun: image in, image + light out (light_extraction.h). Needs
+//                  the whole image, writable.
+//   3. projector   one, chosen by ConvertOptions::method: the closed-form rules of every
+//                  layout (project.h, project_cube.h, project_sphere_map.h) or the sampling
+//                  rules of other tools on equirect maps (sampling_methods.h). The value
+//                  policies (--nonfinite, --negative) are applied here and nowhere else.
+//                  When no transform needs the whole image, exact and center stream an
+//                  equirect file in bands through EquirectProjector (streams_rows).
+//   4. finish      finish_projection, on the SH and on every extracted light alike:
+//                    radiance = rotate_about_y(intensity M L, rotate_deg)  (colorspace.h, rotate.h)
+//                    unity    = apply_window(radiance_to_unity_form(radiance), window)
+//                    radiance = apply_band_factors(radiance, the window's factors)
+//                    L1:        band 2 of both set to 0 (document.h says why)
+//                    float32 check, minimum of E/pi per channel (sh_minimum.h), packing
+//                  (unity_pack.h: the only place where doubles become float32).
+//   5. document    make_document (document.h): what was read, the options applied, the
+//                  result; lib/io's writers only format it.
 #pragma once
 
 #include <array>
+#include <optional>
 
+#include "shpack/colorspace.h"
+#include "shpack/conventions.h"
+#include "shpack/cube_layout.h"
+#include "shpack/image_view.h"
+#include "shpack/layout.h"
+#include "shpack/light_extraction.h"
+#include "shpack/project.h"
+#include "shpack/rotate.h"
+#include "shpack/sampling_methods.h"
 #include "shpack/sh_basis.h"
 #include "shpack/sh_minimum.h"
 #include "shpack/status.h"
+#include "shpack/unity_light.h"
+#include "shpack/unity_pack.h"
 #include "shpack/window.h"
 
 namespace shpack {
 
+// ---- Stage 1: what the source stage hands on ------------------------------------------
+
+struct MapImage {
+  Layout layout = Layout::Equirect;  // resolved: never Auto
+  ImageView image;                   // every layout but Faces
+  std::array<ImageView, kCubeFaceCount> faces{};  // Layout::Faces, Unity's face order
+  CubeFrame cube_frame = CubeFrame::Unity;        // cube layouts only
+  // The memory `image` views, packed F32 (make_view): the transforms write into it. Only
+  // needed when a transform runs.
+  float* writable = nullptr;
+};
+
+// ---- Stage 4 --------------------------------------------------------------------------
+
 struct FinishOptions {
+  std::optional<Matrix3> colour_matrix;  // file RGB -> linear Rec. 709 (colorspace.h); none: identity
   double intensity = 1.0;   // linear factor on the radiance; finite and >= 0
   double rotate_deg = 0.0;  // yaw about +Y, as Skybox/Panoramic's _Rotation (rotate.h); finite
   Window window;            // deringing (window.h)
+  bool l1 = false;          // band 2 removed, for Light Probe Proxy Volumes (document.h)
 };
 
 struct FinishedSh {
-  ShL2 radiance;      // L_c,i with intensity, rotation and window applied
+  ShL2 radiance;      // L_c,i with colour, intensity, rotation, window and L1 applied
   ShL2 unity_form;    // (A_l / pi) k_i L_c,i, windowed (convolution.h)
-  WindowResult window;                           // the factors the window applied
+  WindowResult window;                                       // the factors the window applied
   std::array<SphereMinimum, kChannelCount> min_e_over_pi{};  // per channel, of unity_form
+  UnitySphericalHarmonicsL2 unity_sh{};  // the 27 floats (unity_pack.h)
+  UnityShaderVectors shader{};           // the seven float4 vectors
+};
+
+// An extracted light after the finish stage: in the output's colours and frame, scaled.
+struct FinishedLight {
+  SunLight light;
+  UnitySunLight unity;  // unity_light.h
 };
 
 // Errors: Errc::InvalidArgument for an intensity or rotation out of its domain or a window
@@ -40,8 +88,55 @@ struct FinishedSh {
 // left as it was.
 Status finish_projection(const ShL2& projected_radiance, const FinishOptions& options, FinishedSh& out) noexcept;
 
+// The same colour matrix, intensity and rotation applied to a light (its direction turned,
+// its irradiance and sky level mixed and scaled), and its Unity form.
+FinishedLight finish_light(const SunLight& light, const FinishOptions& options) noexcept;
+
 // The option checks of finish_projection alone (intensity and rotation), for callers that
 // want to refuse bad options before they read an image.
 Status check_finish_options(const FinishOptions& options) noexcept;
+
+// ---- The whole pipeline ---------------------------------------------------------------
+
+struct ConvertOptions {
+  MethodSpec method;                      // stage 3 (validate_method)
+  NonFinite nonfinite = NonFinite::Error; // stage 3
+  Negative negative = Negative::Keep;     // stage 3
+  unsigned threads = 1;                   // stage 3; 0 = all cores
+  bool extract_sun = false;               // stage 2
+  FinishOptions finish;                   // stage 4
+};
+
+struct Conversion {
+  ProjectStats stats;                 // what the projector saw (sampling methods: their reads)
+  FinishedSh sh;
+  std::optional<FinishedLight> sun;   // extract_sun found one
+};
+
+// The checks that need no pixels: the method's parameter (validate_method), the finish
+// options, a sampling method or --extract-sun on a layout other than equirect, a cube frame
+// other than Unity on a layout that is not a cube. InvalidArgument, naming the option.
+Status check_convert_options(const ConvertOptions& options, Layout layout, CubeFrame cube_frame) noexcept;
+
+// True when stage 3 can take the map in bands of rows (EquirectProjector), so that the
+// source never holds the whole image: exact or center on an equirect map, no transform.
+bool streams_rows(const ConvertOptions& options, Layout layout) noexcept;
+
+// The value policy for NaN/Inf applied to what the projector counted: the projectors always
+// run with NonFinite::Zero so that the whole image is seen, and then, under NonFinite::Error
+// with nonfinite_texels > 0, this is Errc::NonFiniteTexel with the first texel's x, y (and
+// face). Success otherwise.
+Status apply_nonfinite_policy(const ProjectStats& stats, NonFinite policy) noexcept;
+
+// Stages 2 to 4 on a whole image. On success `out` holds the result. On failure `out` is
+// left as it was, except that under NonFiniteTexel `seen` (if given) receives the counts,
+// with the first bad texel in image coordinates (in face coordinates and its face for
+// Layout::Faces), so the caller can say how many there are and where.
+Status convert_map(const MapImage& map, const ConvertOptions& options, Conversion& out,
+                   ProjectStats* seen = nullptr) noexcept;
+
+// Stage 4 on a projection made elsewhere (the streamed path): the SH and the light.
+Status finish_conversion(const ShL2& projected, const ProjectStats& stats, const std::optional<SunLight>& sun,
+                         const FinishOptions& options, Conversion& out) noexcept;
 
 }  // namespace shpack

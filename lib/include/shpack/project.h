@@ -5,11 +5,11 @@
 // coefficients L_c,i = int L_c(w) Y_i(w) dw in Unity's frame (sh_basis.h), in double.
 //
 // Methods:
-//  - Method::Exact (default): every basis polynomial is integrated over every texel in
+//  - SamplingMethod::Exact (default): every basis polynomial is integrated over every texel in
 //    closed form, separately in theta and longitude, so the projection of the piecewise-
 //    constant image has no quadrature error at all: a 1x1 image is a uniform environment,
 //    a 2x1 image two exact hemispheres, a bright pole texel exactly its own integral.
-//  - Method::Center: the basis at the texel centre times the texel's exact solid angle,
+//  - SamplingMethod::Center: the basis at the texel centre times the texel's exact solid angle,
 //    the rule of most other tools; its error falls as h^2 on smooth input.
 //
 // Numerics. Texel values are summed in double along each row against per-column tables,
@@ -31,7 +31,22 @@
 
 namespace shpack {
 
-enum class Method : std::uint8_t { Exact, Center };
+// How a map is projected: the closed-form rules of this header (Exact, Center), which every
+// layout has, and the sampling rules of other tools (sampling_methods.h), for comparison.
+enum class SamplingMethod : std::uint8_t {
+  Exact,            // "exact": closed-form texel integrals (project.h)
+  Center,           // "center": basis at texel centres (project.h)
+  Mip,              // "mip:K"
+  MonteCarlo,       // "mc:N"
+  QuasiMonteCarlo,  // "qmc:N"
+  Fibonacci,        // "fib:N"
+  Importance,       // "is:N"
+  Riemann,          // "riemann:N"
+  CubeThreeJs,      // "cube:N"
+  CubeExact,        // "cube-exact:N"
+  LeastSquares,     // "lsq:N"
+};
+
 // A texel with a NaN or Inf channel: fail with Errc::NonFiniteTexel, or replace each
 // non-finite channel value by 0 (its finite channels are kept). Counted either way.
 enum class NonFinite : std::uint8_t { Error, Zero };
@@ -40,7 +55,10 @@ enum class NonFinite : std::uint8_t { Error, Zero };
 enum class Negative : std::uint8_t { Keep, Clamp };
 
 struct ProjectOptions {
-  Method method = Method::Exact;
+  // The closed-form projectors (this header, project_cube.h, project_sphere_map.h) take
+  // Exact or Center and refuse the others with InvalidArgument; project_with_method
+  // (sampling_methods.h) takes its MethodSpec instead.
+  SamplingMethod method = SamplingMethod::Exact;
   NonFinite nonfinite = NonFinite::Error;
   Negative negative = Negative::Keep;
   unsigned threads = 1;  // worker threads; 0 = std::thread::hardware_concurrency()
@@ -53,6 +71,9 @@ struct ProjectStats {
   std::uint64_t negative_texels = 0;   // at least one finite negative channel
   std::uint32_t first_nonfinite_x = 0, first_nonfinite_y = 0;  // valid if nonfinite_texels
   double max_value = 0;                // largest finite channel value (0 if none positive)
+  // project_cube: the face (CubeFace order) of the first NaN/Inf texel, whose face-local
+  // coordinates first_nonfinite_x, _y are; 0 for the other projections.
+  std::uint32_t first_nonfinite_face = 0;
 };
 
 inline constexpr std::uint32_t kTileRows = 64;

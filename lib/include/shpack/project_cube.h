@@ -21,11 +21,11 @@
 // uniform faces.
 //
 // Methods (ProjectOptions::method):
-//  - Method::Exact (default): each of the 9 basis polynomials is integrated over each
+//  - SamplingMethod::Exact (default): each of the 9 basis polynomials is integrated over each
 //    texel in closed form (derivation in lib/src/cube_moments.h), so the projection of the
 //    piecewise-constant cube has no quadrature error: a bright texel contributes exactly its
 //    own integral, whatever N.
-//  - Method::Center: the basis at the texel centre times the texel's exact solid angle; its
+//  - SamplingMethod::Center: the basis at the texel centre times the texel's exact solid angle; its
 //    error falls as h^2 on smooth input.
 //
 // Values: as project_equirect. NaN/Inf texels fail with Errc::NonFiniteTexel (x, y and
@@ -36,7 +36,7 @@
 //
 // Numerics. A texel's weights are its exact integrals up to about 10 u / h of its solid
 // angle (u = 2^-53, h = 2/N): 5e-16 at N = 1, 4e-13 at N = 1024, 1.6e-12 at N = 4096
-// (cube_moments.h; measured in tests/unit/project_cube_test.cpp). Texel sums are double;
+// (cube_moments.h; measured in tests/projection/project_cube_test.cpp). Texel sums are double;
 // rows are combined with Neumaier's compensated sum in fixed tiles of kTileRows face rows
 // (the same rows of all six faces, which share the texel weights), reduced in tile, then
 // face order: the result is bit-identical for any thread count.
@@ -67,12 +67,12 @@ Status project_cube(const std::array<ImageView, kCubeFaceCount>& faces, const Pr
                     ShL2& radiance, ProjectStats* stats = nullptr) noexcept;
 
 // What project_cube adds to the radiance coefficients per unit of radiance in texel (x, y)
-// of `face` of an N x N cube: int_texel Y_i dw (Method::Exact), or Y_i(centre) times the
-// texel's solid angle (Method::Center); out[0] / k0 is the texel's solid angle. The same
+// of `face` of an N x N cube: int_texel Y_i dw (SamplingMethod::Exact), or Y_i(centre) times the
+// texel's solid angle (SamplingMethod::Center); out[0] / k0 is the texel's solid angle. The same
 // arithmetic as project_cube, so a cube that is 1 in that texel and 0 elsewhere projects
 // to exactly these numbers. Errors: Errc::InvalidArgument (size 0, x or y >= size, face or
 // method out of range).
 Status cube_texel_basis_integrals(std::uint32_t size, CubeFace face, std::uint32_t x, std::uint32_t y,
-                                  Method method, std::array<double, kShCount>& out) noexcept;
+                                  SamplingMethod method, std::array<double, kShCount>& out) noexcept;
 
 }  // namespace shpack

@@ -50,7 +50,7 @@
 //   dw = sin psi dpsi dalpha = 4 rho drho dalpha = 4 du dv: the solid angle of a texel is
 //   4 times its area inside the disc (closed form, used as such).
 //
-// Method (Method::Exact only). Each texel's nine integrals int P_i(d) dw (times k_i) over
+// SamplingMethod (SamplingMethod::Exact only). Each texel's nine integrals int P_i(d) dw (times k_i) over
 // its part inside the map are computed by Gauss-Legendre quadrature of the basis times the
 // exact Jacobian, in coordinates where the integrand is analytic (lib/src/sphere_map_*.cpp
 // derive them): octahedral texels are cut along the folds |u| + |v| = 1, u = 0, v = 0; disc
@@ -61,7 +61,7 @@
 // Gauss-Legendre remainder bounds (lib/src/gauss_legendre.h) evaluated for 1e-20 of the
 // integrand's scale: four decades of margin, because for the substituted integrands the
 // bounds are estimates (at 1e-16 the measured errors reached 2e-11). Measured against an
-// independent oracle (tests/unit/project_sphere_map_test.cpp, sizes 1 to 255), every
+// independent oracle (tests/projection/project_sphere_map_test.cpp, sizes 1 to 255), every
 // texel's integrals are within 3e-15 of the largest texel solid angle of the image (the
 // test's bound is 1e-12), and the solid angles of each map sum to 4 pi within 5e-15. The
 // mirror ball's solid angles are the closed form above. There is no closed form behind the
@@ -90,7 +90,7 @@ namespace shpack {
 enum class SphereMap : std::uint8_t { Octahedral, Angular, MirrorBall };
 
 // Errors: Errc::BadView (the view fails resolve_view or is not square), Errc::InvalidArgument
-// (a method other than Method::Exact, or an unknown map), Errc::NonFiniteTexel (x, y of the
+// (a method other than SamplingMethod::Exact, or an unknown map), Errc::NonFiniteTexel (x, y of the
 // first one in row-major order), Errc::OutOfMemory.
 Status project_sphere_map(const ImageView& image, SphereMap map, const ProjectOptions& options,
                           ShL2& radiance, ProjectStats* stats = nullptr) noexcept;

@@ -1,16 +1,16 @@
 // sampling_methods.h - other ways to project an equirect map: the rules that engines,
-// importers and textbooks use, made comparable with Method::Exact (issue 6).
+// importers and textbooks use, made comparable with the exact projection.
 //
 // Contract. Every method sees the image exactly as project.h does: radiance constant over
 // each texel (conventions.h gives each texel's patch of the sphere), every value read with
 // the NaN/Inf and negative policies of ProjectOptions. A method looks at that piecewise-
 // constant image only through the texel a direction falls in (equirect_texel), so as its
-// parameter grows each method converges to Method::Exact of the same image. The result is
+// parameter grows each method converges to SamplingMethod::Exact of the same image. The result is
 // the radiance coefficients L_c,i = int L_c(w) Y_i(w) dw in Unity's frame (sh_basis.h),
 // accumulated in double with Neumaier sums in a fixed order: bit-identical from run to run.
 //
 //   spec           estimate of int L Y_i dw                               seed  allocates
-//   exact, center  project_equirect, Method::Exact / Method::Center         -   column tables
+//   exact, center  project_equirect (project.h)                            -   column tables
 //   mip:K          box-filter 2^K x 2^K texels (a GPU mip level), then exact -   the small map
 //   mc:N           (4 pi / N) sum_k L(w_k) Y(w_k), w_k i.i.d. uniform       yes   -
 //   qmc:N          the same, w_k from a randomly digit-shifted Sobol net    yes   -
@@ -31,7 +31,7 @@
 //    average of a 2^K x 2^K block; otherwise edge texels are split between two footprints in
 //    proportion to their overlap (an exact box filter), so the small map covers the sphere
 //    like the source. The small map is held in float32 RGB, as a GPU render target would, and
-//    projected with Method::Exact. mip:0 equals exact bit for bit.
+//    projected with SamplingMethod::Exact. mip:0 equals exact bit for bit.
 //    Allocates 3 x W' x H' doubles (accumulators) and floats (the small map), and one
 //    source row (3 x W floats).
 //  - mc:N: directions y = 1 - 2 u1, lon = 2 pi u2 (uniform on the sphere, Archimedes), with
@@ -92,20 +92,6 @@
 
 namespace shpack {
 
-enum class SamplingMethod : std::uint8_t {
-  Exact,            // "exact": project_equirect, Method::Exact
-  Center,           // "center": project_equirect, Method::Center
-  Mip,              // "mip:K"
-  MonteCarlo,       // "mc:N"
-  QuasiMonteCarlo,  // "qmc:N"
-  Fibonacci,        // "fib:N"
-  Importance,       // "is:N"
-  Riemann,          // "riemann:N"
-  CubeThreeJs,      // "cube:N"
-  CubeExact,        // "cube-exact:N"
-  LeastSquares,     // "lsq:N"
-};
-
 inline constexpr std::uint64_t kDefaultMethodSeed = 0x5eed;
 inline constexpr double kImportanceFloor = 0.25;  // eps of is:N (see above)
 
@@ -147,7 +133,7 @@ struct MethodName {
 MethodName method_name(const MethodSpec& spec) noexcept;
 
 // Projects an equirect image (ImageView, resolved by resolve_view) with `spec`: radiance
-// coefficients comparable with project_equirect(Method::Exact). Errors: BadView,
+// coefficients comparable with project_equirect(SamplingMethod::Exact). Errors: BadView,
 // InvalidArgument (validate_method), NonFiniteTexel (NonFinite::Error, see above),
 // OutOfMemory (mip, is, exact, center: their documented buffers).
 Status project_with_method(const ImageView& image, const MethodSpec& spec,

@@ -34,7 +34,7 @@ Status preetham_radiance(const PreethamSky& sky, Dir3 d, Rgb& radiance) noexcept
 // exactly (add_hemisphere_light). The integrand is smooth (e^(B / cos theta) vanishes with
 // all its derivatives at the horizon for B < 0, which T >= 1.7 guarantees). `error_estimate`,
 // if given, receives max |rule - rule at half the nodes| relative to |L_0|: a bound on the
-// error once convergence is geometric (tests/scene measure it against brute force).
+// error once convergence is geometric (tests/lights measure it against brute force).
 inline constexpr int kPreethamThetaNodes = 64;
 inline constexpr int kPreethamPhiNodes = 192;
 Status add_preetham_sky(const PreethamSky& sky, ShL2& radiance, double* error_estimate = nullptr) noexcept;

@@ -8,7 +8,7 @@
 //
 // so that dot(SHA, (n,1)) + dot(SHB, (xy, yz, zz, zx)) + SHC.c (x^2 - y^2) = sum_i sh P_i(n).
 // A widely copied packing swaps indices 5 and 6 in SHB and green and blue in SHC: this
-// one does not (tests/unit/unity_pack_test.cpp).
+// one does not (tests/sh/unity_pack_test.cpp).
 #pragma once
 
 #include <array>

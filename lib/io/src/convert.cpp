@@ -1,129 +1,133 @@
 #include "shpack/io/convert.h"
 
 #include <future>
-#include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
-#include "shpack/convolution.h"
-#include "shpack/io/colorspace.h"
-#include "shpack/io/method_projection.h"
 #include "shpack/io/sha256.h"
-#include "shpack/pipeline.h"
 
 namespace shpack::io {
 namespace {
 
-// The colour space the input is taken as, and the matrix to linear Rec. 709 (identity for
-// Rec. 709 itself): --colorspace if given, else the file's chromaticities, else Rec. 709.
-IoStatus colour_matrix(const std::filesystem::path& path, const ConvertSettings& settings,
-                       const std::optional<Chromaticities>& file, std::string& name, std::optional<Matrix3>& matrix) {
-  Chromaticities chromaticities = colorspace_chromaticities(ColorSpace::LinearRec709);
-  if (settings.colorspace != ColorSpace::Auto) {
-    chromaticities = colorspace_chromaticities(settings.colorspace);
-    name = colorspace_name(settings.colorspace);
-  } else if (file.has_value()) {
-    chromaticities = *file;
-    const ColorSpace named = named_colorspace(*file);
-    name = named == ColorSpace::Auto ? "file" : colorspace_name(named);
-  } else {
-    name = colorspace_name(ColorSpace::LinearRec709);
-  }
-  if (named_colorspace(chromaticities) == ColorSpace::LinearRec709) return IoStatus::success();
-  Matrix3 m;
-  std::string problem;
-  if (!rgb_to_rec709_matrix(chromaticities, m, problem))
-    return IoStatus::error(IoErrc::Unsupported, path, problem + "; --colorspace can name the primaries");
-  matrix = m;
+namespace fs = std::filesystem;
+
+IoStatus core_error(const fs::path& path, const Status& st) {
+  const IoErrc code = st.code == Errc::InvalidArgument ? IoErrc::InvalidArgument
+                      : st.code == Errc::OutOfRange    ? IoErrc::Unsupported
+                                                       : IoErrc::Core;
+  return IoStatus::error(code, path, st.what);
+}
+
+// The one message for NaN/Inf texels under NonFinite::Error: how many, and the first.
+IoStatus nonfinite_error(const MapSource& source, const ProjectStats& seen, const MethodSpec& method) {
+  const bool reads = !(method.method == SamplingMethod::Exact || method.method == SamplingMethod::Center);
+  const std::string what = reads ? " NaN/Inf texel reads by " + std::string(method_name(method).view())
+                                 : std::string(" NaN/Inf texels");
+  return IoStatus::error(IoErrc::NonFiniteTexel, source.path(seen.first_nonfinite_face),
+                         std::to_string(seen.nonfinite_texels) + what + " (first at x=" +
+                             std::to_string(seen.first_nonfinite_x) + ", y=" + std::to_string(seen.first_nonfinite_y) +
+                             ")");
+}
+
+// Stage 3 streamed: bands of rows into the core's EquirectProjector, NaN/Inf counted.
+IoStatus project_streamed(MapSource& source, const ConvertOptions& options, ShL2& radiance, ProjectStats& stats) {
+  const fs::path& path = source.path();
+  EquirectProjector projector;
+  const ProjectOptions project{options.method.method, NonFinite::Zero, options.negative, options.threads};
+  if (Status st = projector.begin(source.info().width, source.info().height, project); !st.ok())
+    return core_error(path, st);
+  if (IoStatus st = source.stream_into(projector, options.threads); !st.ok()) return st;
+  if (Status st = projector.finish(radiance, &stats); !st.ok()) return core_error(path, st);
   return IoStatus::success();
 }
 
-FinishOptions finish_options(const ConvertSettings& settings) {
-  return {settings.intensity, settings.rotate_deg, settings.window};
+// The options of stages 2 to 4 with what the source resolved (its colour matrix).
+ConvertOptions resolved(const ConvertSettings& settings, const SourceInfo& info) {
+  ConvertOptions options = settings.convert;
+  options.finish.colour_matrix = info.colour.matrix;
+  return options;
 }
 
-// The document of a projection: colour, intensity, rotation, window, Unity form, minimum.
-// `path` names the input in errors.
-IoStatus finish_document(const std::filesystem::path& path, const ConvertSettings& settings,
-                         const EnvMapProjection& projection, ShDocument& doc) {
-  if (IoStatus st = colour_matrix(path, settings, projection.info.chromaticities, doc.reading.colorspace,
-                                  doc.colour_matrix);
-      !st.ok())
-    return st;
-  doc.reading.layer = settings.env_map.layer;
-  doc.reading.cube_frame = settings.env_map.cube_frame;
-  doc.method = settings.method;
-  doc.intensity = settings.intensity;
-  doc.rotate_deg = settings.rotate_deg;
-  doc.window = settings.window;
-  const ShL2 linear = doc.colour_matrix ? mix_channels(projection.radiance, *doc.colour_matrix) : projection.radiance;
-  FinishedSh finished;
-  if (Status st = finish_projection(linear, finish_options(settings), finished);
-      !st.ok())
-    return IoStatus::error(st.code == Errc::OutOfRange ? IoErrc::Unsupported : IoErrc::InvalidArgument, path, st.what);
-  doc.radiance = finished.radiance;
-  doc.unity_form = finished.unity_form;
-  doc.diagnostics = {projection.stats.nonfinite_texels, projection.stats.negative_texels,
-                     projection.info.ignored_channels, finished.min_e_over_pi, finished.window.factors,
-                     finished.window.impossible};
+// Stages 2 to 4 of an opened source.
+IoStatus run_stages(MapSource& source, const ConvertSettings& settings, Conversion& out) {
+  const fs::path& path = source.path();
+  const ConvertOptions options = resolved(settings, source.info());
+  const Layout layout = source.info().layout;
+  if (Status st = check_convert_options(options, layout, source.cube_frame()); !st.ok()) return core_error(path, st);
+  if (streams_rows(options, layout)) {
+    ShL2 radiance;
+    ProjectStats stats;
+    if (IoStatus st = project_streamed(source, options, radiance, stats); !st.ok()) return st;
+    if (!apply_nonfinite_policy(stats, options.nonfinite).ok()) return nonfinite_error(source, stats, options.method);
+    if (Status st = finish_conversion(radiance, stats, std::nullopt, options.finish, out); !st.ok())
+      return core_error(path, st);
+    return IoStatus::success();
+  }
+  MapImage map;
+  if (IoStatus st = source.read_whole(map, options.threads); !st.ok()) return st;
+  ProjectStats seen;
+  if (Status st = convert_map(map, options, out, &seen); !st.ok())
+    return st.code == Errc::NonFiniteTexel ? nonfinite_error(source, seen, options.method) : core_error(path, st);
   return IoStatus::success();
 }
 
 // finish_projection's option checks, before any image is read.
-IoStatus check_settings(const std::filesystem::path& path, const ConvertSettings& settings) {
-  if (Status st = check_finish_options(finish_options(settings)); !st.ok())
-    return IoStatus::error(IoErrc::InvalidArgument, path, st.what);
+IoStatus check_settings(const fs::path& path, const ConvertSettings& settings) {
+  if (Status st = check_finish_options(settings.convert.finish); !st.ok()) return core_error(path, st);
+  if (Status st = validate_method(settings.convert.method); !st.ok()) return core_error(path, st);
   return IoStatus::success();
+}
+
+ShReading reading_of(const ConvertSettings& settings, const SourceInfo& info) {
+  return {settings.source.layer, settings.source.cube_frame, info.colour.name, info.ignored_channels};
 }
 
 }  // namespace
 
-IoStatus convert_env_map(const std::filesystem::path& path, const ConvertSettings& settings,
-                         ShDocument& out) {
+IoStatus convert_file(const fs::path& path, const ConvertSettings& settings, Conversion& out, SourceInfo* info) {
+  if (IoStatus st = check_settings(path, settings); !st.ok()) return st;
+  MapSource source;
+  if (IoStatus st = source.open(path, settings.source); !st.ok()) return st;
+  if (IoStatus st = run_stages(source, settings, out); !st.ok()) return st;
+  if (info != nullptr) *info = source.info();
+  return IoStatus::success();
+}
+
+IoStatus convert_env_map(const fs::path& path, const ConvertSettings& settings, ShDocument& out) {
   if (IoStatus st = check_settings(path, settings); !st.ok()) return st;
   // The file is hashed on its own thread while it is decoded and projected: hashing is a
   // second pass over the file (about 0.7 s of the 1.4 GB 16384x8192 map's 8 s), which
   // overlapped with the decoder's wait for the disk and page cache costs almost nothing.
   std::string digest;
   std::future<IoStatus> hashed = std::async(std::launch::async, [&] { return sha256_file(path, digest); });
-  EnvMapProjection projection;
-  if (IoStatus st = project_env_map_with_method(path, settings.env_map, settings.method, projection);
-      !st.ok())
-    return st;  // ~future waits for the hash
+  Conversion conversion;
+  SourceInfo info;
+  if (IoStatus st = convert_file(path, settings, conversion, &info); !st.ok()) return st;  // ~future waits
   if (IoStatus st = hashed.get(); !st.ok()) return st;
-
-  ShDocument doc;
-  doc.source = {{path.filename().string()}, {digest}, projection.info.layout,
-                projection.info.width, projection.info.height};
-  if (IoStatus st = finish_document(path, settings, projection, doc); !st.ok()) return st;
-  out = std::move(doc);
+  ShSource source{{path.filename().string()}, {digest}, info.layout, info.width, info.height};
+  out = make_document(std::move(source), reading_of(settings, info), resolved(settings, info), conversion);
   return IoStatus::success();
 }
 
-IoStatus convert_cube_faces(const std::array<std::filesystem::path, 6>& paths, const ConvertSettings& settings,
+IoStatus convert_cube_faces(const std::array<fs::path, kCubeFaceCount>& paths, const ConvertSettings& settings,
                             ShDocument& out) {
   if (IoStatus st = check_settings(paths[0], settings); !st.ok()) return st;
-  if (!streams_file(settings.method.method)) {
-    return IoStatus::error(IoErrc::Unsupported, paths[0],
-                           std::string(method_name(settings.method).view()) +
-                               " reads equirect maps only (faces given); use exact or center");
-  }
-  EnvMapOptions options = settings.env_map;
-  options.project.method = settings.method.method == SamplingMethod::Exact ? Method::Exact : Method::Center;
-  EnvMapProjection projection;
-  if (IoStatus st = project_cube_faces(paths, options, projection); !st.ok()) return st;
-  ShDocument doc;
-  doc.source.layout = Layout::Faces;
-  doc.source.width = projection.info.width;
-  doc.source.height = projection.info.height;
-  for (const std::filesystem::path& path : paths) {
+  if (Status st = check_convert_options(settings.convert, Layout::Faces, settings.source.cube_frame); !st.ok())
+    return core_error(paths[0], st);  // before six files are read
+  MapSource source;
+  if (IoStatus st = source.open_faces(paths, settings.source); !st.ok()) return st;
+  Conversion conversion;
+  if (IoStatus st = run_stages(source, settings, conversion); !st.ok()) return st;
+  const SourceInfo& info = source.info();
+  ShSource files{{}, {}, Layout::Faces, info.width, info.height};
+  for (const fs::path& path : paths) {
     std::string digest;
     if (IoStatus st = sha256_file(path, digest); !st.ok()) return st;
-    doc.source.files.push_back(path.filename().string());
-    doc.source.sha256.push_back(std::move(digest));
+    files.files.push_back(path.filename().string());
+    files.sha256.push_back(std::move(digest));
   }
-  if (IoStatus st = finish_document(paths[0], settings, projection, doc); !st.ok()) return st;
-  out = std::move(doc);
+  out = make_document(std::move(files), reading_of(settings, info), resolved(settings, info), conversion);
   return IoStatus::success();
 }
 

@@ -46,7 +46,7 @@ std::vector<std::string> provenance_lines(const ShDocument& doc) {
       "options: " + json["options"].dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace),
       "frame: " + json["frame"].get<std::string>() + "; values are linear"};
   if (doc.l1) lines.push_back("L1 only (--l1): band 2 (coefficients 4..8) removed, for Light Probe Proxy Volumes");
-  if (doc.sun_extraction) {  // the sun's light is in the JSON document only (sun.h)
+  if (doc.sun_extraction) {  // the sun's light is in the JSON document only (light_extraction.h)
     lines.push_back(doc.sun ? "sun removed (--extract-sun): " + json["sun"]["direction"].dump() +
                                   " towards it; its Unity directional light is in the JSON form"
                             : "--extract-sun: no sun found, the map is whole");

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "shpack/io/sh_document.h"
+#include "shpack/document.h"
 
 namespace shpack::io::detail {
 

@@ -29,7 +29,7 @@ std::string to_csharp(const ShDocument& doc) {
       "    public static UnityEngine.Rendering.SphericalHarmonicsL2 Probe()\n"
       "    {\n"
       "        var sh = new UnityEngine.Rendering.SphericalHarmonicsL2();\n";
-  const UnitySphericalHarmonicsL2 sh = to_unity_sh(doc.unity_form);
+  const UnitySphericalHarmonicsL2& sh = doc.sh.unity_sh;
   for (int c = 0; c < kChannelCount; ++c)
     for (int i = 0; i < kShCount; ++i)
       out += "        sh[" + std::to_string(c) + ", " + std::to_string(i) + "] = " +

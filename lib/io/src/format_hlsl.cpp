@@ -2,7 +2,7 @@
 #include <string>
 
 #include "format_common.h"
-#include "json_keys.h"
+#include "shpack/io/sh_record_json.h"
 #include "shpack/io/output_format.h"
 #include "shpack/unity_pack.h"
 
@@ -36,8 +36,8 @@ std::string to_hlsl(const ShDocument& doc) {
       "// unit world-space normal n.\n"
       "#ifndef " + guard + "\n"
       "#define " + guard + "\n\n";
-  const UnityShaderVectors vectors = to_shader_vectors(doc.unity_form);
-  for (const auto& [key, member] : detail::kShaderVectorKeys) {
+  const UnityShaderVectors& vectors = doc.sh.shader;
+  for (const auto& [key, member] : kShaderVectorKeys) {
     const UnityShaderVectors::Float4& v = vectors.*member;
     out += "static const float4 " + name(key) + " = float4(";
     for (int k = 0; k < 4; ++k) out += detail::float_scientific(v[k]) + (k < 3 ? "f, " : "f);\n");

@@ -23,7 +23,7 @@ std::string to_unity_yaml(const ShDocument& doc) {
       "# (c = 0 red, 1 green, 2 blue). Paste these lines, indented, under m_AmbientProbe\n"
       "# (RenderSettings) or m_BakedAmbientProbeInLinear (LightingData.asset), or as one element\n"
       "# \"- sh[ 0]: ...\" of a LightProbes asset's m_BakedCoefficients.\n";
-  const UnitySphericalHarmonicsL2 sh = to_unity_sh(doc.unity_form);
+  const UnitySphericalHarmonicsL2& sh = doc.sh.unity_sh;
   for (int c = 0; c < kChannelCount; ++c) {
     for (int i = 0; i < kShCount; ++i) {
       const int flat = kShCount * c + i;

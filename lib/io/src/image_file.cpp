@@ -6,10 +6,13 @@
 
 namespace shpack::io {
 
-IoStatus read_image_file(const std::filesystem::path& path, const std::string& layer, ImageFile& out) {
+namespace detail {
+
+IoStatus read_image_file(const std::filesystem::path& path, const std::string& layer, const TexelBudget& budget,
+                         ImageFile& out) {
   try {
-    detail::ImageSource source;
-    if (IoStatus st = source.open(path, layer); !st.ok()) return st;
+    ImageSource source;
+    if (IoStatus st = source.open(path, layer, budget); !st.ok()) return st;
     ImageFile image;
     image.width = source.width();
     image.height = source.height();
@@ -27,6 +30,17 @@ IoStatus read_image_file(const std::filesystem::path& path, const std::string& l
   } catch (const std::exception& e) {
     return IoStatus::error(IoErrc::Unreadable, path, e.what());
   }
+}
+
+}  // namespace detail
+
+IoStatus read_image_file(const std::filesystem::path& path, const std::string& layer, std::uint64_t max_texels,
+                         ImageFile& out) {
+  return detail::read_image_file(path, layer, detail::TexelBudget{max_texels, 1}, out);
+}
+
+IoStatus read_image_file(const std::filesystem::path& path, const std::string& layer, ImageFile& out) {
+  return read_image_file(path, layer, kDefaultMaxTexels, out);
 }
 
 }  // namespace shpack::io

@@ -1,18 +1,295 @@
 #include "image_open.h"
 
-#include "file_checks.h"
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <string_view>
+
+#include "shpack/io/file_checks.h"
 
 namespace shpack::io::detail {
+namespace {
 
-IoStatus open_image(const std::filesystem::path& path, std::unique_ptr<OIIO::ImageInput>& in) {
-  if (IoStatus st = check_regular_file(path); !st.ok()) return st;
+std::mutex& stderr_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+void write_all(int fd, const char* data, std::size_t size) {
+  while (size > 0) {
+    const ssize_t n = ::write(fd, data, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return;
+    data += n;
+    size -= static_cast<std::size_t>(n);
+  }
+}
+
+enum class Magic : std::uint8_t { Other, Png, OpenExr };
+
+// What the first bytes of the readable file `path` say it is.
+Magic file_magic(const std::filesystem::path& path) {
+  static constexpr std::array<unsigned char, 8> kPng = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  static constexpr std::array<unsigned char, 4> kExr = {0x76, 0x2f, 0x31, 0x01};
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+  if (fd < 0) return Magic::Other;
+  std::array<unsigned char, 8> head{};
+  const ssize_t got = ::read(fd, head.data(), head.size());
+  ::close(fd);
+  if (got == static_cast<ssize_t>(head.size()) && head == kPng) return Magic::Png;
+  if (got >= 4 && std::equal(kExr.begin(), kExr.end(), head.begin())) return Magic::OpenExr;
+  return Magic::Other;
+}
+
+// Reads a file through pread, for walking a header without holding it.
+struct FileBytes {
+  int fd = -1;
+  std::uint64_t size = 0;
+  bool read(std::uint64_t at, void* out, std::size_t n) const {
+    if (at > size || n > size - at) return false;
+    auto* p = static_cast<char*>(out);
+    while (n > 0) {
+      const ssize_t got = ::pread(fd, p, n, static_cast<off_t>(at));
+      if (got < 0 && errno == EINTR) continue;
+      if (got <= 0) return false;
+      p += got;
+      at += static_cast<std::uint64_t>(got);
+      n -= static_cast<std::size_t>(got);
+    }
+    return true;
+  }
+  // A name at `at` as OpenEXR reads it: at most `max` bytes and a NUL; `at` moves past it.
+  // False at the end of the file or without the NUL (OpenEXR refuses the file then).
+  bool name(std::uint64_t& at, std::size_t max, std::string& out) const {
+    out.clear();
+    for (char ch = 0; out.size() <= max;) {
+      if (!read(at, &ch, 1)) return false;
+      ++at;
+      if (ch == '\0') return true;
+      out += ch;
+    }
+    return false;  // not NUL-terminated: OpenEXR refuses it
+  }
+};
+
+std::int32_t little_i32(const unsigned char* b) {
+  const std::uint32_t u = std::uint32_t{b[0]} | std::uint32_t{b[1]} << 8 | std::uint32_t{b[2]} << 16 |
+                          std::uint32_t{b[3]} << 24;
+  std::int32_t v;
+  std::memcpy(&v, &u, sizeof v);
+  return v;
+}
+
+// Scanlines per chunk of an OpenEXR compression.
+std::uint64_t exr_lines_per_chunk(int compression) {
+  switch (compression) {
+    case 3: case 5: return 16;          // ZIP, PXR24
+    case 4: case 6: case 7: case 8: return 32;  // PIZ, B44, B44A, DWAA
+    case 9: return 256;                 // DWAB
+    default: return 1;                  // NONE, RLE, ZIPS
+  }
+}
+
+// The bytes OpenEXR reads for a value of a fixed-size attribute type, or 0.
+std::uint64_t exr_fixed_size(const std::string& type) {
+  static const std::pair<const char*, std::uint64_t> kSizes[] = {
+      {"box2i", 16}, {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"double", 8}, {"envmap", 1},
+      {"float", 4}, {"int", 4}, {"keycode", 28}, {"lineOrder", 1}, {"m33f", 36}, {"m33d", 72}, {"m44f", 64},
+      {"m44d", 128}, {"rational", 8}, {"tiledesc", 9}, {"timecode", 8}, {"v2i", 8}, {"v2f", 8}, {"v2d", 16},
+      {"v3i", 12}, {"v3f", 12}, {"v3d", 24}, {"deepImageState", 1}};
+  for (const auto& [name, size] : kSizes)
+    if (type == name) return size;
+  return 0;
+}
+
+// The problem with an OpenEXR header that would make OpenEXR allocate more than the file or
+// the budget allows, or "" (also for what is merely malformed: OpenEXR says that).
+std::string exr_header_problem(const std::filesystem::path& path, const TexelBudget& budget) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+  if (fd < 0) return {};
+  struct stat st {};
+  FileBytes file{fd, 0};
+  if (::fstat(fd, &st) == 0) file.size = static_cast<std::uint64_t>(st.st_size);
+  std::string problem;
+  std::array<unsigned char, 8> head{};
+  if (file.read(0, head.data(), head.size())) {
+    const std::uint32_t flags = static_cast<std::uint32_t>(little_i32(head.data() + 4));
+    const bool multipart = (flags & 0x1000) != 0, single_tiled = (flags & 0x200) != 0;
+    constexpr std::size_t max_name = 255;  // OpenEXR reads 255 whatever the long-names flag
+    std::uint64_t at = 8;
+    for (int part = 0; problem.empty(); ++part) {
+      // One header: attributes until an empty name.
+      std::array<std::int32_t, 4> data{0, 0, -1, -1}, display{0, 0, -1, -1};
+      bool has_data = false, has_display = false, tiled = single_tiled;
+      int compression = 0;
+      std::uint32_t tile_w = 0, tile_h = 0;
+      std::string name, type;
+      bool any = false;
+      for (;;) {
+        if (!file.name(at, max_name, name)) return ::close(fd), std::string();
+        if (name.empty()) break;
+        any = true;
+        unsigned char size_bytes[4];
+        if (!file.name(at, max_name, type) || !file.read(at, size_bytes, 4)) return ::close(fd), std::string();
+        at += 4;
+        const std::int32_t size = little_i32(size_bytes);
+        if (size < 0) return ::close(fd), std::string();  // OpenEXR refuses it
+        // OpenEXR reads a value of a known fixed-size type by its type, whatever `size` says;
+        // the others (strings, vectors, opaque) by `size`.
+        std::uint64_t length = static_cast<std::uint64_t>(size);
+        if (const std::uint64_t fixed = exr_fixed_size(type); fixed != 0) {
+          length = fixed;
+        } else if (type == "chlist") {  // entries "name\0" + 16 bytes, until an empty name
+          std::uint64_t p = at;
+          for (std::string channel;;) {
+            if (!file.name(p, max_name, channel)) return ::close(fd), std::string();
+            if (channel.empty()) break;
+            p += 16;
+          }
+          length = p - at;
+        } else if (type == "preview") {  // width, height, then 4 bytes a texel
+          unsigned char wh[8];
+          if (!file.read(at, wh, 8)) return ::close(fd), std::string();
+          const std::uint64_t texels = std::uint64_t{static_cast<std::uint32_t>(little_i32(wh))} *
+                                       static_cast<std::uint32_t>(little_i32(wh + 4));
+          if (texels > (file.size - at) / 4) {
+            problem = "the header's preview image declares " + std::to_string(texels) +
+                      " texels, more than the file holds";
+            break;
+          }
+          length = 8 + 4 * texels;
+        }
+        if (length > file.size - at) {
+          problem = "the header's attribute '" + name.substr(0, 64) + "' declares " + std::to_string(length) +
+                    " bytes, more than the file holds";
+          break;
+        }
+        unsigned char value[16] = {};
+        const bool small = length <= 16 && file.read(at, value, static_cast<std::size_t>(length));
+        if (small && type == "box2i") {
+          std::array<std::int32_t, 4>& box = name == "dataWindow" ? data : display;
+          if (name == "dataWindow" || name == "displayWindow") {
+            for (int k = 0; k < 4; ++k) box[k] = little_i32(value + 4 * k);
+            (name == "dataWindow" ? has_data : has_display) = true;
+          }
+        } else if (small && name == "compression" && type == "compression") {
+          compression = value[0];
+        } else if (small && type == "tiledesc") {
+          tile_w = static_cast<std::uint32_t>(little_i32(value));
+          tile_h = static_cast<std::uint32_t>(little_i32(value + 4));
+          tiled = true;
+        } else if (name == "type" && type == "string") {
+          std::string kind(static_cast<std::size_t>(std::min(size, 32)), '\0');
+          if (file.read(at, kind.data(), kind.size())) tiled = kind.rfind("tiled", 0) == 0 || kind.rfind("deeptile", 0) == 0;
+        }
+        at += length;
+      }
+      if (!problem.empty() || (multipart && !any)) break;  // the empty header ends the parts
+      const long long dw = has_data ? static_cast<long long>(data[2]) - data[0] + 1 : 0;
+      const long long dh = has_data ? static_cast<long long>(data[3]) - data[1] + 1 : 0;
+      const long long fw = has_display ? static_cast<long long>(display[2]) - display[0] + 1 : 0;
+      const long long fh = has_display ? static_cast<long long>(display[3]) - display[1] + 1 : 0;
+      if (problem.empty() && fw > 0 && fh > 0) problem = budget_problem("the image", fw, fh, budget);
+      if (problem.empty() && dw > 0 && dh > 0) problem = budget_problem("the data window", dw, dh, budget);
+      if (problem.empty() && dw > 0 && dh > 0) {
+        // The chunk offset table OpenEXR allocates: at least one 8-byte entry a chunk of level 0.
+        const std::uint64_t chunks =
+            tiled && tile_w > 0 && tile_h > 0
+                ? ((static_cast<std::uint64_t>(dw) + tile_w - 1) / tile_w) * ((static_cast<std::uint64_t>(dh) + tile_h - 1) / tile_h)
+                : (static_cast<std::uint64_t>(dh) + exr_lines_per_chunk(compression) - 1) / exr_lines_per_chunk(compression);
+        if (chunks > file.size / 8)
+          problem = "the header declares " + std::to_string(chunks) + " chunks, more than the file of " +
+                    std::to_string(file.size) + " bytes can hold";
+      }
+      if (!multipart) break;
+      if (part > 10000) break;
+    }
+  }
+  ::close(fd);
+  return problem;
+}
+
+}  // namespace
+
+std::string budget_problem(const char* what, long long w, long long h, const TexelBudget& budget) {
+  const auto texels = static_cast<std::uint64_t>(std::max(0LL, w)) * static_cast<std::uint64_t>(std::max(0LL, h));
+  const std::uint64_t images = std::max<std::uint32_t>(1, budget.images);
+  // texels * images > max, without overflow (texels < 2^64 / 4, images small).
+  if (texels <= budget.max_texels / images) return {};
+  std::string line = std::string(what) + " is " + std::to_string(w) + "x" + std::to_string(h) + " (" +
+                     std::to_string(texels) + " texels";
+  if (images > 1) line += ", " + std::to_string(texels * images) + " for " + std::to_string(images) + " images";
+  return line + "), above the budget of " + std::to_string(budget.max_texels) + " (--max-texels)";
+}
+
+QuietLibpng::QuietLibpng(bool active) {
+  if (!active) return;
+  lock_ = std::unique_lock<std::mutex>(stderr_mutex());
+  std::fflush(stderr);
+  capture_ = ::memfd_create("shpack-stderr", MFD_CLOEXEC);
+  if (capture_ < 0) return;
+  saved_ = ::fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 3);
+  if (saved_ < 0 || ::dup2(capture_, STDERR_FILENO) < 0) {
+    if (saved_ >= 0) ::close(saved_);
+    saved_ = -1;
+  }
+}
+
+QuietLibpng::~QuietLibpng() {
+  if (saved_ >= 0) {
+    std::fflush(stderr);
+    ::dup2(saved_, STDERR_FILENO);
+    ::close(saved_);
+    // Pass on what was not libpng's.
+    std::string captured;
+    std::array<char, 4096> buffer;
+    if (::lseek(capture_, 0, SEEK_SET) == 0) {
+      for (ssize_t n; (n = ::read(capture_, buffer.data(), buffer.size())) > 0;)
+        captured.append(buffer.data(), static_cast<std::size_t>(n));
+    }
+    for (std::size_t begin = 0; begin < captured.size();) {
+      std::size_t end = captured.find('\n', begin);
+      end = end == std::string::npos ? captured.size() : end + 1;
+      const std::string_view line(captured.data() + begin, end - begin);
+      if (line.rfind("libpng error: ", 0) != 0 && line.rfind("libpng warning: ", 0) != 0)
+        write_all(STDERR_FILENO, line.data(), line.size());
+      begin = end;
+    }
+  }
+  if (capture_ >= 0) ::close(capture_);
+}
+
+std::string with_reason(std::string what, const std::string& reason) {
+  if (reason.find_first_not_of(" \t\r\n") != std::string::npos) what += " (" + reason + ")";
+  return what;
+}
+
+IoStatus open_image(const std::filesystem::path& path, const TexelBudget& budget,
+                    std::unique_ptr<OIIO::ImageInput>& in, bool& png) {
+  in.reset();
+  if (IoStatus st = check_readable_file(path); !st.ok()) return st;
+  const Magic magic = file_magic(path);
+  png = magic == Magic::Png;
+  if (magic == Magic::OpenExr) {
+    if (const std::string problem = exr_header_problem(path, budget); !problem.empty())
+      return IoStatus::error(IoErrc::Unsupported, path, problem);
+  }
   // Colour is wanted as stored: PNG/TIFF readers would otherwise premultiply it by alpha.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
-  in = OIIO::ImageInput::open(path.string(), &config);
+  {
+    const QuietLibpng quiet(png);
+    in = OIIO::ImageInput::open(path.string(), &config);
+  }
   if (!in) {
-    return IoStatus::error(IoErrc::Unreadable, path,
-                           "not an image that can be read (" + OIIO::geterror() + ")");
+    return IoStatus::error(IoErrc::Unreadable, path, with_reason("not an image that can be read", OIIO::geterror()));
   }
   return IoStatus::success();
 }

@@ -10,25 +10,68 @@
 namespace shpack::io::detail {
 namespace {
 
+int find_channel(const OIIO::ImageSpec& spec, const std::string& name) {
+  const auto it = std::find(spec.channelnames.begin(), spec.channelnames.end(), name);
+  return it == spec.channelnames.end() ? -1 : static_cast<int>(it - spec.channelnames.begin());
+}
+
 // Channels prefix+"R", "G", "B" (used = 3) or prefix+"Y" (used = 1) of `spec`, or false.
 bool named_channels(const OIIO::ImageSpec& spec, const std::string& prefix, std::array<int, 3>& channel,
                     std::uint32_t& used) {
-  const auto find = [&](const char* name) {
-    const auto it = std::find(spec.channelnames.begin(), spec.channelnames.end(), prefix + name);
-    return it == spec.channelnames.end() ? -1 : static_cast<int>(it - spec.channelnames.begin());
-  };
-  const int r = find("R"), g = find("G"), b = find("B");
+  const int r = find_channel(spec, prefix + "R"), g = find_channel(spec, prefix + "G"),
+            b = find_channel(spec, prefix + "B");
   if (r >= 0 && g >= 0 && b >= 0) {
     channel = {r, g, b};
     used = 3;
     return true;
   }
-  if (const int y = find("Y"); y >= 0) {
+  if (const int y = find_channel(spec, prefix + "Y"); y >= 0) {
     channel = {y, y, y};
     used = 1;
     return true;
   }
   return false;
+}
+
+// The channel names of `spec` in file order, for messages (at most 16, then how many).
+std::string channel_list(const OIIO::ImageSpec& spec) {
+  constexpr std::size_t kShown = 16;
+  std::string list;
+  const std::size_t count = spec.channelnames.size();
+  for (std::size_t k = 0; k < std::min(count, kShown); ++k) {
+    const std::string& n = spec.channelnames[k];
+    list += (k == 0 ? "" : ", ") + (n.empty() ? std::string("an unnamed channel") : n.substr(0, 64));
+  }
+  if (count > kShown) list += ", ... (" + std::to_string(count) + " channels)";
+  return list.empty() ? "no channels" : list;
+}
+
+// The colour channels of a part without a layer prefix: R, G, B, else Y, else its only
+// channel if that is unnamed. Else the problem, naming the channels the part has; "" when
+// the part has layered names instead (the caller lists the layers).
+std::string unprefixed_channels(const OIIO::ImageSpec& spec, bool layered, std::array<int, 3>& channel,
+                                std::uint32_t& used, bool& found) {
+  found = named_channels(spec, "", channel, used);
+  if (found) return {};
+  std::string missing;
+  bool some = false;
+  for (const char* name : {"R", "G", "B"}) {
+    if (find_channel(spec, name) >= 0)
+      some = true;
+    else
+      missing += (missing.empty() ? "" : ", ") + std::string(name);
+  }
+  if (some)
+    return "incomplete colour channels: no " + missing + " (R, G and B, or Y, are read); it has " + channel_list(spec);
+  if (layered) return {};
+  if (spec.nchannels == 1 && spec.channelnames.size() <= 1 &&
+      (spec.channelnames.empty() || spec.channelnames[0].empty())) {
+    channel = {0, 0, 0};
+    used = 1;
+    found = true;
+    return {};
+  }
+  return "no colour channels (R, G, B or Y); it has " + channel_list(spec);
 }
 
 bool has_layered_names(const OIIO::ImageSpec& spec) {
@@ -57,9 +100,9 @@ std::string layer_list(OIIO::ImageInput& in) {
 
 }  // namespace
 
-IoStatus ImageSource::open(const std::filesystem::path& path, const std::string& layer) {
+IoStatus ImageSource::open(const std::filesystem::path& path, const std::string& layer, const TexelBudget& budget) {
   path_ = path;
-  if (IoStatus st = open_image(path, in_); !st.ok()) return st;
+  if (IoStatus st = open_image(path, budget, in_, png_); !st.ok()) return st;
   format_ = in_->format_name();
 
   // Choose the subimage and channels.
@@ -67,12 +110,9 @@ IoStatus ImageSource::open(const std::filesystem::path& path, const std::string&
   if (layer.empty()) {
     spec_ = in_->spec(0);
     subimage_ = 0;
-    found = named_channels(spec_, "", channel_, used_);
-    if (!found && !has_layered_names(spec_)) {
-      used_ = spec_.nchannels >= 3 ? 3 : 1;
-      channel_ = used_ == 3 ? std::array<int, 3>{0, 1, 2} : std::array<int, 3>{0, 0, 0};
-      found = spec_.nchannels > 0;
-    }
+    const bool layered = has_layered_names(spec_);
+    if (const std::string problem = unprefixed_channels(spec_, layered, channel_, used_, found); !problem.empty())
+      return IoStatus::error(IoErrc::Unsupported, path, problem);
     if (!found && spec_.nchannels > 0) {
       return IoStatus::error(IoErrc::Unsupported, path,
                              "the image has no R, G, B or Y channels; its layers are " + layer_list(*in_) +
@@ -85,12 +125,9 @@ IoStatus ImageSource::open(const std::filesystem::path& path, const std::string&
       if (spec.get_string_attribute("oiio:subimagename") != layer) continue;
       spec_ = spec;
       subimage_ = s;
-      found = named_channels(spec_, "", channel_, used_);
-      if (!found && !has_layered_names(spec_) && spec_.nchannels > 0) {
-        used_ = spec_.nchannels >= 3 ? 3 : 1;
-        channel_ = used_ == 3 ? std::array<int, 3>{0, 1, 2} : std::array<int, 3>{0, 0, 0};
-        found = true;
-      }
+      const bool layered = has_layered_names(spec_);
+      if (const std::string problem = unprefixed_channels(spec_, layered, channel_, used_, found); !problem.empty())
+        return IoStatus::error(IoErrc::Unsupported, path, "part '" + layer + "': " + problem);
     }
     for (int s = 0; !found; ++s) {  // channels layer.R, layer.G, layer.B
       const OIIO::ImageSpec spec = in_->spec(s);
@@ -108,6 +145,15 @@ IoStatus ImageSource::open(const std::filesystem::path& path, const std::string&
   }
   if (const std::string problem = spec_problem(spec_); !problem.empty())
     return IoStatus::error(IoErrc::Unsupported, path, problem);
+  // The budget, from the header: the display window (what is held) and the data window
+  // (what is decoded), before anything is allocated for either.
+  {
+    const bool has_display = spec_.full_width > 0 && spec_.full_height > 0;
+    std::string problem = budget_problem("the image", has_display ? spec_.full_width : spec_.width,
+                                         has_display ? spec_.full_height : spec_.height, budget);
+    if (problem.empty()) problem = budget_problem("the data window", spec_.width, spec_.height, budget);
+    if (!problem.empty()) return IoStatus::error(IoErrc::Unsupported, path, problem);
+  }
 
   // The display window; OpenImageIO fills it with the data window for formats without one.
   width_ = static_cast<std::uint32_t>(spec_.full_width > 0 ? spec_.full_width : spec_.width);
@@ -146,9 +192,11 @@ IoStatus ImageSource::read_rows(std::uint32_t first, std::uint32_t count, float*
                         (used_ == 1 || (channel_[1] == channel_[0] + 1 && channel_[2] == channel_[0] + 2));
   const auto read_error = [&] {
     return IoStatus::error(IoErrc::Unreadable, path_,
-                           "cannot read rows " + std::to_string(first) + ".." + std::to_string(first + count - 1) +
-                               " (" + in_->geterror() + ")");
+                           with_reason("cannot read rows " + std::to_string(first) + ".." +
+                                           std::to_string(first + count - 1),
+                                       in_->geterror()));
   };
+  const QuietLibpng quiet(png_);
   if (in_place) {
     if (!in_->read_scanlines(subimage_, 0, static_cast<int>(y_begin), static_cast<int>(y_end), spec_.z,
                              first_channel_, last_channel_, OIIO::TypeDesc::FLOAT, out))

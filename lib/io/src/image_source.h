@@ -3,11 +3,17 @@
 //
 // Which pixels:
 //  - Part and channels. Without a layer: subimage 0, its channels named R, G, B (any order in
-//    the file), else Y (grey); a file whose channel names carry no layer prefix ("diffuse.R")
-//    falls back to its first three channels (or its first, if it has fewer than three), as
-//    for PNG, HDR, PFM. With a layer NAME: the subimage (EXR part) named NAME, read as above;
-//    else the channels NAME.R, NAME.G, NAME.B (or NAME.Y) of the first subimage that has them.
+//    the file), else Y (grey), else its one channel if it has only one and that is unnamed.
+//    Nothing else is taken for colour: a part with some of R, G, B but not all ("it has G,
+//    R"), or with no colour channel at all (only A, Z, ...), fails naming the channels it
+//    has; one whose channels all carry a layer prefix ("diffuse.R") fails listing the
+//    layers. (OpenImageIO names the channels of PNG, HDR, PFM, TIFF, JPEG R, G, B [, A] or
+//    Y [, A].) With a layer NAME: the subimage (EXR part) named NAME, read as above; else the
+//    channels NAME.R, NAME.G, NAME.B (or NAME.Y) of the first subimage that has them.
 //    Anything else fails and lists the file's layers.
+//  - Budget. The display window and the data window, as the header declares them, are each
+//    at most TexelBudget::max_texels texels (times TexelBudget::images), checked at open(),
+//    before anything is allocated or decoded.
 //  - Window. The image is the display window (OpenEXR's displayWindow, OpenImageIO's "full"
 //    window); texels outside the data window are black (0), and data outside the display
 //    window is not read.
@@ -25,6 +31,8 @@
 #include <string>
 #include <vector>
 
+#include "image_open.h"
+#include "shpack/io/image_file.h"
 #include "shpack/io/io_status.h"
 
 namespace shpack::io::detail {
@@ -32,7 +40,7 @@ namespace shpack::io::detail {
 class ImageSource {
  public:
   // Opens `path` and chooses its part and channels. Errors name the file.
-  IoStatus open(const std::filesystem::path& path, const std::string& layer);
+  IoStatus open(const std::filesystem::path& path, const std::string& layer, const TexelBudget& budget);
 
   std::uint32_t width() const noexcept { return width_; }    // display window
   std::uint32_t height() const noexcept { return height_; }
@@ -61,6 +69,11 @@ class ImageSource {
   std::string format_;
   std::optional<std::array<double, 8>> chromaticities_;
   std::vector<float> scratch_;  // a band of data rows, when they cannot be read in place
+  bool png_ = false;            // read through QuietLibpng
 };
+
+// read_image_file (image_file.h) under `budget`.
+IoStatus read_image_file(const std::filesystem::path& path, const std::string& layer, const TexelBudget& budget,
+                         ImageFile& out);
 
 }  // namespace shpack::io::detail

@@ -5,12 +5,10 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
-#include <sstream>
 #include <string>
 
-#include "file_checks.h"
-#include "json_keys.h"
+#include "shpack/io/file_checks.h"
+#include "shpack/io/sh_record_json.h"
 
 namespace shpack::io {
 namespace {
@@ -54,10 +52,13 @@ auto elements(const Json& value, const std::string& pointer, Read read) {
 
 ShJsonContent content_of(const Json& doc) {
   const Json& version = member(doc, "", "schema_version");
-  if (!version.is_number_integer() || version.get<std::int64_t>() != detail::kSchemaVersion) {
-    throw BadValue{"/schema_version", "unsupported schema version " + version.dump() +
+  if (!version.is_number_integer() || version.get<std::int64_t>() != kSchemaVersion) {
+    // A primitive is quoted (cut short), a structure named: a nested one is never dumped.
+    std::string shown = version.is_primitive() ? version.dump() : std::string(version.type_name());
+    if (shown.size() > 40) shown = shown.substr(0, 40) + "...";
+    throw BadValue{"/schema_version", "unsupported schema version " + shown +
                                           " (this shpack reads " +
-                                          std::to_string(detail::kSchemaVersion) + ")"};
+                                          std::to_string(kSchemaVersion) + ")"};
   }
   ShJsonContent out;
   const auto doubles = [](const Json& v, const std::string& p) {
@@ -70,7 +71,7 @@ ShJsonContent content_of(const Json& doc) {
   out.unity_sh = elements<kChannelCount>(member(doc, "", "sphericalHarmonicsL2"),
                                          "/sphericalHarmonicsL2", floats);
   const Json& shader = member(doc, "", "shader");
-  for (const auto& [key, vector] : detail::kShaderVectorKeys) {
+  for (const auto& [key, vector] : kShaderVectorKeys) {
     const std::string pointer = std::string("/shader/") + key;
     out.shader.*vector = elements<4>(member(shader, "/shader", key), pointer, float32);
   }
@@ -91,13 +92,12 @@ std::string parse_problem(const Json::parse_error& e) {
 }  // namespace
 
 IoStatus read_sh_json(const std::filesystem::path& path, ShJsonContent& out) {
-  if (IoStatus st = detail::check_not_directory(path); !st.ok()) return st;
   try {
-    std::ifstream file(path, std::ios::binary);
-    std::ostringstream text;
-    text << file.rdbuf();
-    if (!file) return IoStatus::error(IoErrc::Unreadable, path, "cannot read the file");
-    out = content_of(Json::parse(text.str()));
+    // One checked read: a regular file (or this process's stdin pipe) of at most
+    // kMaxDocumentBytes; devices, FIFOs and larger files are refused before reading.
+    std::string text;
+    if (IoStatus st = detail::read_text_file(path, detail::kMaxDocumentBytes, text); !st.ok()) return st;
+    out = content_of(Json::parse(text));
     return IoStatus::success();
   } catch (const Json::parse_error& e) {
     return IoStatus::error(IoErrc::Unreadable, path, "not valid JSON: " + parse_problem(e));

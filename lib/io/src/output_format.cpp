@@ -1,7 +1,6 @@
 #include "shpack/io/output_format.h"
 
 #include "shpack/io/json_writer.h"
-#include "shpack/sh_minimum.h"
 
 namespace shpack::io {
 
@@ -33,16 +32,6 @@ std::string format_document(const ShDocument& doc, OutputFormat format) {
     case OutputFormat::UnityYaml: return to_unity_yaml(doc);
   }
   return to_json(doc);
-}
-
-void truncate_to_l1(ShDocument& doc) {
-  for (int c = 0; c < kChannelCount; ++c) {
-    for (int i = 0; i < kShCount; ++i) {
-      if (kBand[i] == 2) doc.radiance.c[c][i] = doc.unity_form.c[c][i] = 0.0;
-    }
-    doc.diagnostics.min_e_over_pi[c] = minimum_on_sphere(doc.unity_form, c);
-  }
-  doc.l1 = true;
 }
 
 }  // namespace shpack::io

@@ -2,7 +2,7 @@
 
 #include <OpenImageIO/strutil.h>
 
-#include "shpack/io/srgb.h"
+#include "shpack/srgb.h"
 
 namespace shpack::io::detail {
 

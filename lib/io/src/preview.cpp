@@ -7,10 +7,10 @@
 #include <optional>
 
 #include "preview_draw.h"
-#include "preview_reference.h"
+#include "shpack/irradiance_reference.h"
 #include "shpack/conventions.h"
 #include "shpack/io/image_file.h"
-#include "shpack/io/layout.h"
+#include "shpack/layout.h"
 #include "shpack/rotate.h"
 #include "shpack/unity_pack.h"
 
@@ -75,7 +75,7 @@ std::string number(double v, bool sign) {
 }
 
 IoStatus load_reference(const std::filesystem::path& path, const ShJsonContent& content,
-                        std::optional<detail::ReferenceIrradiance>& reference) {
+                        std::optional<ReferenceIrradiance>& reference) {
   ImageFile map;
   if (IoStatus st = read_image_file(path, map); !st.ok()) return st;
   if (resolve_layout(Layout::Auto, map.width, map.height) != Layout::Equirect) {
@@ -102,7 +102,7 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
   if (s < 32 || s > 1024) {
     return IoStatus::error(IoErrc::InvalidArgument, "preview", "the size must be 32..1024 pixels");
   }
-  std::optional<detail::ReferenceIrradiance> reference;
+  std::optional<ReferenceIrradiance> reference;
   if (!settings.reference.empty()) {
     if (IoStatus st = load_reference(settings.reference, content, reference); !st.ok()) return st;
   }
@@ -164,7 +164,7 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
         const Dir3 n = panel_direction(x, y, pw, ph);
         const Dir3 v = {r[0][0] * n.x + r[1][0] * n.y + r[2][0] * n.z, r[0][1] * n.x + r[1][1] * n.y + r[2][1] * n.z,
                         r[0][2] * n.x + r[1][2] * n.y + r[2][2] * n.z};
-        const detail::ReferenceValue ref = reference->eval(v);
+        const ReferenceValue ref = reference->eval(v);
         for (int c = 0; c < 3; ++c) out.reference_bound[c] = std::max(out.reference_bound[c], ref.bound[c]);
         out.reference_bound_luminance = std::max(out.reference_bound_luminance, luminance(ref.bound));
         const double e = sh_luminance[std::size_t{y} * pw + x] - luminance(ref.e_over_pi);

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <cmath>
 
-#include "shpack/io/srgb.h"
+#include "shpack/srgb.h"
 
 namespace shpack::io::detail {
 namespace {

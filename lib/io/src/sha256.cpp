@@ -10,7 +10,7 @@
 #include <system_error>
 #include <vector>
 
-#include "file_checks.h"
+#include "shpack/io/file_checks.h"
 
 namespace shpack::io {
 namespace {

@@ -4,7 +4,7 @@
 // `repeats` timed projections of the same in-memory image, each timed alone with
 // std::chrono::steady_clock (wall clock), give the median, min and max. Only the projection
 // is timed: the image is read or made before, and the error measured after. The reference
-// is exact (Method::Exact) of the same image, with the same options.
+// is exact (SamplingMethod::Exact) of the same image, with the same options.
 #pragma once
 
 #include <cstdint>

@@ -39,8 +39,18 @@ struct StudyImage {
 // "synthetic:band-limited", "synthetic:texel", "synthetic:sun", "synthetic:gradient".
 std::vector<std::string> synthetic_map_names();
 
+// The environment variable that names the folder of the bundled maps, overriding the
+// installed one.
+inline constexpr const char* kDataDirVariable = "SHPACK_DATA_DIR";
+
+// The folder of the bundled maps (data/hdri, installed as share/shpack/hdri): `data_dir`
+// (the value of SHPACK_DATA_DIR, or null) if it names a folder, else
+// <folder of `executable`>/../share/shpack/hdri if that is one, else the empty path. The
+// source tree's path is never built in: an installed command finds its own data.
+std::filesystem::path find_bundled_maps(const char* data_dir, const std::filesystem::path& executable);
+
 // The inputs when none are given: every *.exr in `bundled_dir` (sorted by name; none if
-// the folder does not exist), then the synthetic maps.
+// the folder is empty or does not exist), then the synthetic maps.
 std::vector<std::string> default_inputs(const std::filesystem::path& bundled_dir);
 
 // Reads `input`: a synthetic name, or an image file (image_file.h) whose shape says it is

@@ -35,7 +35,7 @@
 #include <vector>
 
 #include "shpack/io/io_status.h"
-#include "shpack/io/scene.h"
+#include "shpack/scene/scene.h"
 #include "shpack/sh_basis.h"
 
 namespace shpack::bake {
@@ -80,6 +80,6 @@ struct BakeResult {
 
 // Errors name the scene file: an environment map that cannot be read, a probe inside a
 // light ("probes[3] (0, 1, 0) is inside lights[2] 'lamp' (sphere)"), Embree failing.
-io::IoStatus bake(const io::Scene& scene, const BakeOptions& options, BakeResult& out);
+io::IoStatus bake(const scene::Scene& scene, const BakeOptions& options, BakeResult& out);
 
 }  // namespace shpack::bake

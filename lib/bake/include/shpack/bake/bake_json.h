@@ -18,7 +18,7 @@
 
 #include "shpack/bake/bake.h"
 #include "shpack/io/io_status.h"
-#include "shpack/io/scene.h"
+#include "shpack/scene/scene.h"
 #include "shpack/window.h"
 
 namespace shpack::bake {
@@ -32,7 +32,7 @@ struct BakeJsonOptions {
 
 // Fails (naming the scene file and the probe) when a probe's coefficients do not fit in
 // float32, or the window cannot be applied.
-io::IoStatus bake_to_json(const io::Scene& scene, const BakeResult& result, const BakeJsonOptions& options,
+io::IoStatus bake_to_json(const scene::Scene& scene, const BakeResult& result, const BakeJsonOptions& options,
                           std::string& json);
 
 }  // namespace shpack::bake

@@ -1,40 +1,43 @@
-// convert.h - one environment map file to the content of its output document.
+// convert.h - the pipeline (shpack/pipeline.h) run on files: `shpack convert`, and the
+// environment maps of `shpack bake`.
 //
-// Reads and projects the file (method_projection.h), hashes it (sha256.h), converts its
-// colours to linear Rec. 709 (colorspace.h), applies the intensity and the rotation (rotate.h), convolves to Unity form (convolution.h), windows it (window.h;
-// the same band factors go to the radiance, so radiance_sh and the Unity outputs describe
-// one function) and finds the lowest E/pi per channel (sh_minimum.h). Writing the document is the caller's choice (json_writer.h).
+// Stage 1 is the map source (map_source.h); stages 2 to 4 are the core's. When
+// streams_rows says so (exact or center on an equirect map, no transform) the file is read
+// in bands into the core's EquirectProjector; otherwise it is read whole and handed to
+// convert_map. Either way the NaN/Inf policy, the finish and the document are the core's,
+// so every option means the same on every path. Errors name the file (the face's file for
+// six faces); under NonFinite::Error the message counts the NaN/Inf texels (for the
+// sampling methods, the reads of them) and names the first.
 #pragma once
 
 #include <array>
 #include <filesystem>
 
-#include "shpack/io/colorspace.h"
-#include "shpack/io/env_map.h"
+#include "shpack/document.h"
 #include "shpack/io/io_status.h"
-#include "shpack/io/sh_document.h"
-#include "shpack/sampling_methods.h"
-#include "shpack/window.h"
+#include "shpack/io/map_source.h"
+#include "shpack/pipeline.h"
 
 namespace shpack::io {
 
 struct ConvertSettings {
-  EnvMapOptions env_map;   // its project.method is ignored: `method` says which runs
-  MethodSpec method;       // exact and center stream the file (method_projection.h)
-  double intensity = 1.0;  // linear factor on the radiance; finite and >= 0
-  double rotate_deg = 0.0; // yaw about +Y, as Skybox/Panoramic's _Rotation (rotate.h)
-  Window window;           // deringing (window.h)
-  ColorSpace colorspace = ColorSpace::Auto;  // the input's primaries (colorspace.h); Auto: the file's
+  SourceOptions source;   // stage 1
+  ConvertOptions convert; // stages 2 to 4; its finish.colour_matrix is the source's, not read
 };
 
-// Fails as project_env_map_with_method does, with InvalidArgument for a bad intensity or
-// rotation, and with Unsupported when the result does not fit in float32 (Unity's storage).
-IoStatus convert_env_map(const std::filesystem::path& path, const ConvertSettings& settings,
-                         ShDocument& out);
+// Stages 1 to 4 of one file. `info` (if given) receives what the source held.
+IoStatus convert_file(const std::filesystem::path& path, const ConvertSettings& settings, Conversion& out,
+                      SourceInfo* info = nullptr);
 
-// Six face files in Unity's face order (env_map.h project_cube_faces) to one document, as
-// convert_env_map (exact or center only); source.files and sha256 list the six faces.
-IoStatus convert_cube_faces(const std::array<std::filesystem::path, 6>& paths, const ConvertSettings& settings,
-                            ShDocument& out);
+// convert_file, and the document (shpack/document.h) with the file's SHA-256. Errors as
+// convert_file's, plus InvalidArgument for options that check_convert_options refuses
+// (before the file is read beyond its header) and Unsupported when the result does not fit
+// in float32 (Unity's storage). On failure `out` is left as it was.
+IoStatus convert_env_map(const std::filesystem::path& path, const ConvertSettings& settings, ShDocument& out);
+
+// Six face files in Unity's face order (map_source.h open_faces) to one document;
+// source.files and sha256 list the six faces.
+IoStatus convert_cube_faces(const std::array<std::filesystem::path, kCubeFaceCount>& paths,
+                            const ConvertSettings& settings, ShDocument& out);
 
 }  // namespace shpack::io

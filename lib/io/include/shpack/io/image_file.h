@@ -1,8 +1,8 @@
-// image_file.h - a whole image file read into memory as float, for the projections that
-// need every texel at once (sampling methods, cube layouts, the bench). The streaming
-// equirect path (env_map.h) never holds the whole image.
+// image_file.h - a whole image file read into memory as float, for the readers that need
+// every texel at once outside the pipeline (six face files, the bench, preview --input, the
+// bake's environment lookups). The pipeline's own source is map_source.h.
 //
-// Pixels are decoded exactly as env_map.h describes (float as stored, integer sRGB
+// Pixels are decoded exactly as map_source.h describes (float as stored, integer sRGB
 // linearised, grey kept as one channel, alpha and extra channels dropped and counted; the
 // layer chosen by name; the display window, black outside the data window).
 #pragma once
@@ -33,8 +33,17 @@ struct ImageFile {
   ImageView view() const noexcept { return make_view(pixels.data(), width, height, channels); }
 };
 
-// Reads all of `path`: the layer `layer` (image_source.h; "" for the default choice). Errors
-// name the file, as project_env_map's do.
+// The most texels an image may declare, by default (--max-texels, docs/security.md): 2^28,
+// twice a 16384x8192 map. The display window and the data window are each checked against
+// it from the header, before anything is allocated or decoded.
+inline constexpr std::uint64_t kDefaultMaxTexels = std::uint64_t{1} << 28;
+
+// Reads all of `path`: the layer `layer` (image_source.h; "" for the default choice), if
+// its header declares at most `max_texels` texels (else Unsupported: "the image is WxH (N
+// texels), above the budget of B (--max-texels)"). Errors name the file, as MapSource::open's do.
+IoStatus read_image_file(const std::filesystem::path& path, const std::string& layer, std::uint64_t max_texels,
+                         ImageFile& out);
+// The same, within kDefaultMaxTexels.
 IoStatus read_image_file(const std::filesystem::path& path, const std::string& layer, ImageFile& out);
 inline IoStatus read_image_file(const std::filesystem::path& path, ImageFile& out) {
   return read_image_file(path, std::string(), out);

@@ -34,7 +34,8 @@ struct [[nodiscard]] IoStatus {
   bool ok() const noexcept { return code == IoErrc::Ok; }
   static IoStatus success() { return {}; }
   // Joins file and problem; line breaks in `problem` (OpenImageIO's messages have them)
-  // become "; " so the message stays one line.
+  // become "; " so the message stays one line; other control characters (C0, DEL), in the
+  // file name or the problem, are written as \xNN, so a hostile name prints as text.
   static IoStatus error(IoErrc code, const std::filesystem::path& file, std::string_view problem);
 };
 

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "shpack/io/sh_document.h"
+#include "shpack/document.h"
 
 namespace shpack::io {
 

@@ -1,5 +1,4 @@
-// output_format.h - the forms an output document can take besides JSON (`convert --format`),
-// and the L1-only document for Light Probe Proxy Volumes (`convert --l1`).
+// output_format.h - the forms an output document can take besides JSON (`convert --format`).
 //
 // Every form carries the same float32 numbers as the JSON document (json_writer.h), each
 // written so that it reads back to the same bits (format_common.h says why 9 significant
@@ -19,7 +18,7 @@
 #include <cstdint>
 #include <string>
 
-#include "shpack/io/sh_document.h"
+#include "shpack/document.h"
 
 namespace shpack::io {
 
@@ -37,18 +36,5 @@ std::string to_unity_yaml(const ShDocument& doc);
 
 // The document in `format` (to_json for OutputFormat::Json).
 std::string format_document(const ShDocument& doc, OutputFormat format);
-
-// The L1 part of the document: band 2 (indices 4..8) of radiance_sh and of the Unity-form
-// coefficients set to 0, the minimum of E/pi recomputed, and doc.l1 set.
-//
-// What Unity's Light Probe Proxy Volume wants. A proxy volume stores, per cell, the three
-// float4 vectors SHAr, SHAg, SHAb, and UnityCG.cginc's SHEvalLinearL0L1_SampleProbeVolume
-// returns dot(SHA, (n, 1)) per channel [Unity built-in shaders, CGIncludes/UnityCG.cginc];
-// in quality mode Low nothing else is added (mode Normal adds SHEvalLinearL2 with per-renderer
-// L2 vectors) [Unity Scripting API, LightProbeProxyVolume.QualityMode]. With band 2 removed
-// Unity's own packing (unity_pack.h) gives SHA = (sh3, sh1, sh2, sh0): w = sh0, not
-// sh0 - sh6, so dot(SHA, (n, 1)) = sh0 + sh1 y + sh2 z + sh3 x is exactly the L1 truncation
-// of E/pi: the best L1 fit to E/pi on the sphere (least squares), with the same mean.
-void truncate_to_l1(ShDocument& doc);
 
 }  // namespace shpack::io

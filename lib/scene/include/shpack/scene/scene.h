@@ -1,0 +1,101 @@
+// scene.h - a scene for `shpack bake`, as read from its JSON file (docs/scenes.md).
+//
+// Plain data in Unity's frame, metres, linear RGB, angles in radians. The loader
+// (scene_loader.h) validates the file against docs/scene.schema.json and then checks what a
+// schema cannot (orthogonal axes, finite numbers, readable files); the engine (lib/bake)
+// takes the scene as it is.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "shpack/layout.h"
+#include "shpack/lights.h"
+#include "shpack/sky.h"
+
+namespace shpack::scene {
+
+enum class EnvironmentType : std::uint8_t { None, Map, Gradient, Preetham };
+
+struct SceneEnvironment {
+  EnvironmentType type = EnvironmentType::None;
+  // Map: an environment map, read as `shpack convert` reads it.
+  std::filesystem::path path;  // resolved against the scene file's folder
+  Layout layout = Layout::Auto;
+  double rotation_deg = 0;     // yaw about +Y, as Skybox/Panoramic's _Rotation (rotate.h)
+  double intensity = 1;        // linear factor on the radiance
+  // Gradient: radiance horizon + (zenith - horizon) y above the horizon, ground below
+  // (lights.h, add_gradient_sky).
+  Rgb zenith{}, horizon{}, ground{};
+  // Preetham: the clear sky of sky.h (sun, turbidity, ground, intensity).
+  PreethamSky preetham;
+};
+
+enum class LightType : std::uint8_t { Directional, Point, Sphere, Spot, Rect, Disk, Hemisphere, Ambient };
+
+// One light; which members count depends on `type` (docs/scenes.md).
+struct SceneLight {
+  LightType type = LightType::Directional;
+  std::string label;       // "lights[2]" or "lights[2] 'lamp'": how messages name it
+  // Directional: irradiance at normal incidence. Point, sphere, spot: intensity (W/sr; a
+  // `power` in the file is divided by 4 pi). Rect, disk, ambient: radiance. Hemisphere: sky.
+  Rgb colour{};
+  Rgb ground{};            // hemisphere
+  Point3 position;         // point, sphere, spot, rect and disk centre
+  Dir3 direction;          // unit: directional and spot, the way light travels; disk, its normal
+  double angular_diameter = 0;  // directional
+  double radius = 0;            // sphere, disk
+  double inner_angle = 0, outer_angle = 0;  // spot half-angles
+  Dir3 right, up;               // rect, unit and orthogonal
+  double width = 0, height = 0; // rect
+};
+
+enum class ShapeType : std::uint8_t { Plane, Sphere, Box, Mesh };
+
+// One piece of geometry. Every shape is a triangle mesh for the ray tracer except spheres,
+// which it intersects exactly. Meshes come from OBJ (obj_mesh.h) or glTF (gltf_mesh.h).
+struct SceneShape {
+  ShapeType type = ShapeType::Plane;
+  std::string label;            // "geometry[1] 'floor'"
+  Rgb albedo{};                 // diffuse reflectance, each channel in [0, 1)
+  Rgb emission{};               // emitted radiance, both sides, uniform
+  Point3 centre;                // sphere
+  double radius = 0;            // sphere
+  // Plane, box and mesh, as triangles: xyz per vertex, three indices per triangle.
+  std::vector<float> vertices;
+  std::vector<std::uint32_t> indices;
+};
+
+struct SceneEffects {
+  bool direct = false;         // lights, in closed form
+  bool environment = false;    // the environment, projected once
+  bool shadows = false;        // lights hidden by geometry (needs direct)
+  bool sky_occlusion = false;  // the environment hidden by geometry (needs environment)
+  bool emission = false;       // emissive geometry seen from the probe
+  int bounces = 0;             // diffuse interreflections of what the other effects light
+};
+
+struct SceneSettings {
+  std::uint64_t seed = 1;
+  int shadow_samples = 256;   // points per extended light per probe (rounded up to a full grid)
+  int sky_samples = 1024;     // directions per probe for sky_occlusion and emission
+  int bounce_samples = 1024;  // paths per probe for bounce
+};
+
+struct Scene {
+  std::filesystem::path file;
+  std::string sha256;           // of the scene file
+  std::vector<Point3> probes;
+  SceneEnvironment environment;
+  std::vector<SceneLight> lights;
+  std::vector<SceneShape> geometry;
+  SceneEffects effects;
+  SceneSettings settings;
+};
+
+// The label of probe k, for messages: "probes[3] (1, 0.5, 2)".
+std::string probe_label(const Scene& scene, std::size_t k);
+
+}  // namespace shpack::scene

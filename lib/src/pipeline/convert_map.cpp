@@ -1,0 +1,129 @@
+// convert_map.cpp - stages 2 and 3 of the pipeline (pipeline.h) on a whole image, and the
+// checks that decide which stages run.
+#include <string>
+
+#include "shpack/pipeline.h"
+#include "shpack/project_cube.h"
+#include "shpack/project_sphere_map.h"
+
+namespace shpack {
+namespace {
+
+CubeLayout cube_layout_of(Layout layout) noexcept {
+  switch (layout) {
+    case Layout::VerticalCross: return CubeLayout::VerticalCross;
+    case Layout::HorizontalStrip: return CubeLayout::HorizontalStrip;
+    case Layout::VerticalStrip: return CubeLayout::VerticalStrip;
+    default: return CubeLayout::HorizontalCross;
+  }
+}
+
+SphereMap sphere_map_of(Layout layout) noexcept {
+  return layout == Layout::Angular ? SphereMap::Angular
+         : layout == Layout::MirrorBall ? SphereMap::MirrorBall
+                                        : SphereMap::Octahedral;
+}
+
+bool is_sphere_map(Layout layout) noexcept {
+  return layout == Layout::Octahedral || layout == Layout::Angular || layout == Layout::MirrorBall;
+}
+
+// The frame's signs on the coefficients (conventions.h cube_frame_sign).
+void apply_cube_frame(CubeFrame frame, ShL2& radiance) noexcept {
+  for (auto& channel : radiance.c)
+    for (int i = 0; i < kShCount; ++i) channel[i] *= cube_frame_sign(frame)[i];
+}
+
+// Face-local coordinates of the first NaN/Inf texel -> the image's (single-image cube layouts).
+void to_image_coordinates(const MapImage& map, std::uint32_t face_size, ProjectStats& stats) noexcept {
+  const CubeLayout layout = cube_layout_of(map.layout);
+  const CubeCell cell = cube_layout_cell(layout, static_cast<CubeFace>(stats.first_nonfinite_face));
+  const std::uint32_t n = face_size, x = stats.first_nonfinite_x, y = stats.first_nonfinite_y;
+  const bool one_texel = map.image.width == 1;  // a 1 x 1 image is every face
+  stats.first_nonfinite_x = one_texel ? 0 : cell.column * n + (cell.rotated_180 ? n - 1 - x : x);
+  stats.first_nonfinite_y = one_texel ? 0 : cell.row * n + (cell.rotated_180 ? n - 1 - y : y);
+}
+
+// Stage 3: the projector the layout and the method choose, counting NaN/Inf (zeroed).
+Status project(const MapImage& map, const ConvertOptions& options, ShL2& radiance, ProjectStats& stats) noexcept {
+  ProjectOptions project{options.method.method, NonFinite::Zero, options.negative, options.threads};
+  if (map.layout == Layout::Equirect) return project_with_method(map.image, options.method, project, radiance, &stats);
+  if (is_sphere_map(map.layout)) return project_sphere_map(map.image, sphere_map_of(map.layout), project, radiance, &stats);
+  std::array<ImageView, kCubeFaceCount> faces = map.faces;
+  if (map.layout != Layout::Faces) {
+    if (Status st = cube_face_views(map.image, cube_layout_of(map.layout), faces); !st.ok()) return st;
+  }
+  if (Status st = project_cube(faces, project, radiance, &stats); !st.ok()) return st;
+  apply_cube_frame(map.cube_frame, radiance);
+  if (map.layout != Layout::Faces && stats.nonfinite_texels != 0) to_image_coordinates(map, faces[0].width, stats);
+  return Status::success();
+}
+
+// Stage 2: the transforms the options ask for.
+Status transform(const MapImage& map, const ConvertOptions& options, std::optional<SunLight>& sun) noexcept {
+  if (!options.extract_sun) return Status::success();
+  // Y = w . (M rgb) = (M^T w) . rgb: the luminance of the output primaries (light_extraction.h).
+  SunSearch search{kRec709Luminance, options.negative};
+  if (const std::optional<Matrix3>& m = options.finish.colour_matrix) {
+    for (int j = 0; j < 3; ++j)
+      search.luminance[j] = kRec709Luminance[0] * (*m)[0][j] + kRec709Luminance[1] * (*m)[1][j] +
+                            kRec709Luminance[2] * (*m)[2][j];
+  }
+  return extract_sun(map.image, map.writable, search, sun);
+}
+
+}  // namespace
+
+Status check_convert_options(const ConvertOptions& options, Layout layout, CubeFrame cube_frame) noexcept {
+  if (Status st = validate_method(options.method); !st.ok()) return st;
+  if (Status st = check_finish_options(options.finish); !st.ok()) return st;
+  if (layout == Layout::Auto) return Status::error(Errc::InvalidArgument, "the layout is not resolved");
+  const bool closed_form = options.method.method == SamplingMethod::Exact || options.method.method == SamplingMethod::Center;
+  if (!closed_form && layout != Layout::Equirect)
+    return Status::error(Errc::InvalidArgument, "the sampling methods read equirect maps only; use exact or center");
+  if (options.extract_sun && layout != Layout::Equirect)
+    return Status::error(Errc::InvalidArgument, "--extract-sun reads equirect maps only");
+  if (is_sphere_map(layout) && options.method.method != SamplingMethod::Exact)
+    return Status::error(Errc::InvalidArgument, "octahedral, angular and mirror ball maps are projected with exact only");
+  if (cube_frame != CubeFrame::Unity && !is_cube_layout(layout))
+    return Status::error(Errc::InvalidArgument, "a cube frame applies to cube layouts only");
+  return Status::success();
+}
+
+bool streams_rows(const ConvertOptions& options, Layout layout) noexcept {
+  return layout == Layout::Equirect && !options.extract_sun &&
+         (options.method.method == SamplingMethod::Exact || options.method.method == SamplingMethod::Center);
+}
+
+Status apply_nonfinite_policy(const ProjectStats& stats, NonFinite policy) noexcept {
+  if (policy == NonFinite::Error && stats.nonfinite_texels != 0)
+    return Status::error(Errc::NonFiniteTexel, "NaN or Inf texels", stats.first_nonfinite_x, stats.first_nonfinite_y,
+                         stats.first_nonfinite_face);
+  return Status::success();
+}
+
+Status convert_map(const MapImage& map, const ConvertOptions& options, Conversion& out, ProjectStats* seen) noexcept {
+  if (Status st = check_convert_options(options, map.layout, map.cube_frame); !st.ok()) return st;
+  std::optional<SunLight> sun;
+  if (Status st = transform(map, options, sun); !st.ok()) return st;
+  ShL2 radiance;
+  ProjectStats stats;
+  if (Status st = project(map, options, radiance, stats); !st.ok()) return st;
+  if (Status st = apply_nonfinite_policy(stats, options.nonfinite); !st.ok()) {
+    if (seen != nullptr) *seen = stats;
+    return st;
+  }
+  return finish_conversion(radiance, stats, sun, options.finish, out);
+}
+
+Status finish_conversion(const ShL2& projected, const ProjectStats& stats, const std::optional<SunLight>& sun,
+                         const FinishOptions& options, Conversion& out) noexcept {
+  Conversion result;
+  result.stats = stats;
+  if (Status st = finish_projection(projected, options, result.sh); !st.ok()) return st;
+  if (sun) result.sun = finish_light(*sun, options);
+  out = result;
+  return Status::success();
+}
+
+}  // namespace shpack

@@ -1,0 +1,120 @@
+// Tests of `shpack bake` as a user runs it: exit codes, nothing written on failure, the two
+// output formats.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "scene/scene_files.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Runs the built command through the shell; returns its exit code, stderr in `err`.
+int run(const std::string& args, std::string& err) {
+  const fs::path err_file = shpack_test::scene_scratch() / "stderr.txt";
+  const std::string command = std::string(SHPACK_CLI_PATH) + " " + args + " 2> " + err_file.string();
+  const int status = std::system(command.c_str());
+  std::ifstream in(err_file);
+  err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+constexpr const char* kGood = R"({"probes": [[0, 1, 0], [1, 1, 0], [2, 1, 0]],
+  "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 3}],
+  "geometry": [{"type": "plane", "position": [0, 0, 0], "right": [1, 0, 0], "up": [0, 0, 1], "size": [10, 10]}],
+  "effects": ["direct", "shadows"]})";
+
+TEST(BakeCli, WritesProbesAndEffectCosts) {
+  const fs::path scene = shpack_test::write_scene("cli_good.json", kGood);
+  const fs::path out = shpack_test::scene_scratch() / "cli_good_out.json";
+  std::string err;
+  ASSERT_EQ(run("bake " + scene.string() + " -o " + out.string() + " --quiet", err), 0) << err;
+  const nlohmann::json doc = nlohmann::json::parse(std::ifstream(out));
+  ASSERT_EQ(doc.at("probes").size(), 3u);
+  EXPECT_EQ(doc.at("probes")[1].at("position"), nlohmann::json::parse("[1.0, 1.0, 0.0]"));
+  for (const char* key : {"radiance_sh", "sphericalHarmonicsL2", "shader", "diagnostics"})
+    EXPECT_TRUE(doc.at("probes")[0].contains(key)) << key;
+  EXPECT_TRUE(doc.at("effects").contains("direct"));
+  EXPECT_TRUE(doc.at("effects").contains("shadows"));
+  EXPECT_FALSE(doc.at("effects").contains("bounce")) << "only the effects the scene asks for";
+  EXPECT_EQ(doc.at("effects").at("direct").at("rays"), 0);
+  // A directional light from straight above and a plane below the probes: the planner sees
+  // that no ray towards the light can meet the plane, so shadows trace nothing.
+  EXPECT_EQ(doc.at("effects").at("shadows").at("rays"), 0);
+}
+
+TEST(BakeCli, UnityProbesFormatIsFlatArraysInProbeOrder) {
+  const fs::path scene = shpack_test::write_scene("cli_unity.json", kGood);
+  const fs::path out = shpack_test::scene_scratch() / "cli_unity_out.json";
+  const fs::path full = shpack_test::scene_scratch() / "cli_unity_full.json";
+  std::string err;
+  ASSERT_EQ(run("bake " + scene.string() + " --format unity-probes -o " + out.string(), err), 0) << err;
+  ASSERT_EQ(run("bake " + scene.string() + " -o " + full.string(), err), 0) << err;
+  const nlohmann::json doc = nlohmann::json::parse(std::ifstream(out));
+  const nlohmann::json ref = nlohmann::json::parse(std::ifstream(full));
+  EXPECT_EQ(doc.at("format"), "unity-probes");
+  ASSERT_EQ(doc.at("count"), 3);
+  ASSERT_EQ(doc.at("positions").size(), 9u);
+  ASSERT_EQ(doc.at("sphericalHarmonicsL2").size(), 81u);
+  for (int k = 0; k < 3; ++k)
+    for (int c = 0; c < 3; ++c)
+      for (int i = 0; i < 9; ++i)
+        EXPECT_EQ(doc.at("sphericalHarmonicsL2")[27 * k + 9 * c + i],
+                  ref.at("probes")[k].at("sphericalHarmonicsL2")[c][i])
+            << "k=" << k << " c=" << c << " i=" << i;
+}
+
+TEST(BakeCli, ABadSceneExitsNonZeroNamesThePathAndWritesNothing) {
+  const fs::path scene = shpack_test::write_scene("cli_bad.json", R"({"probes": [[0, 0, 0]], "effects": ["direct"],
+    "lights": [{"type": "ambient", "radiance": 1}, {"type": "hemisphere", "sky": 1, "ground": 0},
+               {"type": "sphere", "position": [0, 3, 0], "radius": -1, "intensity": 1}]})");
+  const fs::path out = shpack_test::scene_scratch() / "cli_bad_out.json";
+  fs::remove(out);
+  std::string err;
+  EXPECT_EQ(run("bake " + scene.string() + " -o " + out.string(), err), 1);
+  EXPECT_EQ(err, "shpack: " + scene.string() + ": lights[2].radius: must be > 0\n");
+  EXPECT_FALSE(fs::exists(out));
+  // An existing output survives a failed bake untouched.
+  std::ofstream(out) << "keep";
+  EXPECT_EQ(run("bake " + scene.string() + " -o " + out.string(), err), 1);
+  std::ifstream in(out);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()), "keep");
+}
+
+TEST(BakeCli, HostileScenesFailInOneLineAndWriteNothing) {
+  // 50,000 nested arrays overflowed the stack (exit 139); /dev/zero aborted with an uncaught
+  // bad_alloc (two lines, exit 134).
+  const std::string deep = std::string(50000, '[') + std::string(50000, ']');
+  const fs::path scene = shpack_test::write_scene("cli_deep.json", R"({"probes": [[0, 0, 0]], "effects": [)" + deep +
+                                                                       ", " + deep + "]}");
+  const fs::path out = shpack_test::scene_scratch() / "cli_hostile_out.json";
+  fs::remove(out);
+  std::string err;
+  EXPECT_EQ(run("bake " + scene.string() + " -o " + out.string(), err), 1);
+  EXPECT_EQ(err, "shpack: " + scene.string() + ": nested deeper than 64 levels\n");
+  EXPECT_EQ(run("bake /dev/zero -o " + out.string(), err), 1);
+  EXPECT_EQ(err, "shpack: /dev/zero: is a device, not a regular file\n");
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(BakeCli, ThreadsBeyondTheCoresAreCapped) {
+  // 2^32 - 1 threads ran out of memory; 100000 took 7 s and 550 MB. The output does not
+  // depend on the thread count.
+  const fs::path scene = shpack_test::write_scene("cli_threads.json", kGood);
+  const fs::path one = shpack_test::scene_scratch() / "cli_threads_1.json";
+  const fs::path many = shpack_test::scene_scratch() / "cli_threads_max.json";
+  std::string err;
+  ASSERT_EQ(run("bake " + scene.string() + " --format unity-probes --threads 1 -o " + one.string(), err), 0) << err;
+  ASSERT_EQ(run("bake " + scene.string() + " --format unity-probes --threads 4294967295 -o " + many.string(), err), 0)
+      << err;
+  EXPECT_EQ(err, "");
+  EXPECT_EQ(nlohmann::json::parse(std::ifstream(one)), nlohmann::json::parse(std::ifstream(many)));
+  EXPECT_EQ(run("bake " + scene.string() + " --threads -1", err), 2) << "not an unsigned integer";
+}
+
+}  // namespace
