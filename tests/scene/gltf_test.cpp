@@ -107,7 +107,7 @@ TEST(Gltf, ViewsAreCheckedAgainstTheirBufferAndBuffersAgainstTheirData) {
   EXPECT_HAS(error_of("view.gltf", document(data_uri_buffer(bytes), R"({"buffer": 0, "byteOffset": 18446744073709551615, "byteLength": 2})",
                                             float_accessor(3))),
              "bufferViews[0]: byteOffset 18446744073709551615 + byteLength 2 exceeds buffers[0] (byteLength 36)");
-  EXPECT_HAS(error_of("short.gltf", document(R"({"byteLength": 40, "uri": "data:application/octet-stream;base64,)" + base64(bytes) + R"("})",
+  EXPECT_HAS(error_of("short.gltf", document(R"({"byteLength": 40, "uri": "data:application/octet-stream;base64,)" + shpack_test::base64(bytes) + R"("})",
                                              R"({"buffer": 0, "byteLength": 36})", float_accessor(3))),
              "buffers[0].byteLength: 40 exceeds its data (36 bytes)");
   // byteStride 0 is tightly packed; an explicit 12 reads the same.
