@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 # -g1: line tables for the sanitizers' reports, without the full debug info that makes the
 # build and link slower (CI should stay under 15 minutes on two cores).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
-  -DSHPACK_WERROR=ON -DSHPACK_SANITIZE=ON
+  -DSHPACK_WERROR=ON -DSHPACK_SANITIZE=ON -DSHPACK_BUILD_BENCH=OFF  # the benchmarks are not run here
 cmake --build build-asan -j"$(nproc)"
 ctest --test-dir build-asan --output-on-failure -j2 -LE large
 

@@ -46,7 +46,11 @@ Parsed parse_number(std::string_view token, T& v) {
 
 std::string quoted(std::string_view token) {
   constexpr std::size_t kShown = 32;  // a hostile token may be megabytes long
-  return "'" + std::string(token.substr(0, kShown)) + (token.size() > kShown ? "...'" : "'");
+  // Appended piece by piece: g++ 12 at -O3 reports a false -Wrestrict on "'" + string.
+  std::string out(1, '\'');
+  out.append(token.substr(0, kShown));
+  out += token.size() > kShown ? "...'" : "'";
+  return out;
 }
 
 std::string number_text(double v) {
