@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <thread>
 
@@ -30,6 +31,53 @@ void draw_progress(const char* pass, std::size_t done, std::size_t total) {
                total ? static_cast<int>(100 * done / total) : 100, done, total);
   if (done == total) std::fputc('\n', stderr);
   std::fflush(stderr);
+}
+
+// One line per thing done to probes inside geometry (docs/scenes.md, "Probe validity"), so
+// that no invalid probe passes silently.
+void warn_invalid_probes(const scene::Scene& scene, const bake::BakeResult& result) {
+  const bake::ValidityCounts& counts = result.validity_counts;
+  if (counts.invalid == 0) return;
+  std::ostringstream os;
+  os << scene.file.string() << ": ";
+  const std::string file = os.str();
+  os.str("");
+  os << " of " << scene.probes.size() << " probes are inside geometry (more than "
+     << 100 * scene.settings.validity_threshold << "% of their rays hit back faces)";
+  const std::string inside = os.str();
+  if (counts.moved)
+    report_error(file + std::to_string(counts.moved) + inside + " and were baked at an offset_position");
+  if (counts.dilated)
+    report_error(file + std::to_string(counts.dilated) + inside +
+                 " and were dilated: each took the distance-weighted mean of its nearest valid probes");
+  const std::size_t kept = counts.invalid - counts.moved - counts.dilated;
+  if (kept)
+    report_error(file + std::to_string(kept) + inside + " and were kept as baked (settings.invalid_probes \"keep\")");
+}
+
+// One line when a target could not be met within settings.max_samples: how many probes, in
+// which effects, and the largest error left (docs/scenes.md, "How wrong a probe may be").
+void warn_capped_probes(const scene::Scene& scene, const bake::BakeResult& result) {
+  std::size_t capped = 0;
+  double worst = 0;
+  std::string effects;
+  for (std::size_t e = 0; e < bake::kEffectCount; ++e) {
+    bool any = false;
+    for (std::size_t k = 0; k < result.sampling.size(); ++k)
+      if (result.sampling[k][e].capped) {
+        any = true;
+        worst = std::max(worst, result.sampling[k][e].error_pct);
+      }
+    if (any) effects += std::string(effects.empty() ? "" : ", ") + bake::effect_name(static_cast<bake::Effect>(e));
+  }
+  for (const auto& probe : result.sampling)
+    capped += std::any_of(probe.begin(), probe.end(), [](const bake::EffectSampling& s) { return s.capped; }) ? 1 : 0;
+  if (capped == 0) return;
+  std::ostringstream os;
+  os << scene.file.string() << ": " << capped << " of " << scene.probes.size() << " probes reached settings.max_samples ("
+     << scene.settings.max_samples << ") before settings.target_error_pct (" << scene.settings.target_error_pct
+     << " %) in " << effects << "; the largest error estimate left is " << worst << " %";
+  report_error(os.str());
 }
 
 }  // namespace
@@ -82,6 +130,8 @@ int run_bake(const BakeCommandOptions& options) {
     report_error(st.message);
     return kExitFailure;
   }
+  warn_invalid_probes(scene, result);
+  warn_capped_probes(scene, result);
   std::string json;
   if (io::IoStatus st = bake::bake_to_json(scene, result, json_options, json); !st.ok()) {
     report_error(st.message);

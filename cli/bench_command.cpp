@@ -1,15 +1,19 @@
 #include "bench_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <system_error>
 
 #include "report.h"
 #include "validators.h"
 #include "shpack/study/method_sweep.h"
+#include "shpack/study/gnuplot.h"
 #include "shpack/study/plot.h"
+#include "shpack/study/scene_study.h"
 #include "shpack/study/study.h"
 #include "shpack/study/study_inputs.h"
 #include "shpack/study/study_report.h"
@@ -22,12 +26,63 @@ void print_progress(const study::StudyRecord& r, std::size_t done, std::size_t t
                method_name(r.spec).c_str(), r.time_ms_median, r.accuracy.err_max_pct);
 }
 
+// Prints a study's report and, with a plot prefix, draws its plot: the exit code, given
+// whether every input was measured.
+int finish_report(const std::string& report, const std::string& plot_prefix, bool all_ok,
+                  const std::function<io::IoStatus()>& plot) {
+  std::cout << report << std::flush;
+  if (!std::cout) {
+    report_error("stdout: cannot write the report");
+    return kExitFailure;
+  }
+  if (!plot_prefix.empty())
+    if (const io::IoStatus st = plot(); !st.ok()) {
+      report_error(st.message);
+      return kExitFailure;
+    }
+  return all_ok ? kExitOk : kExitFailure;
+}
+
+bool is_scene(const std::string& input) { return std::filesystem::path(input).extension() == ".json"; }
+
+// `shpack bench SCENE.json`: each Monte Carlo effect's error against time (scene_study.h).
+int run_scene_bench(const std::vector<std::string>& scenes, const BenchOptions& options) {
+  study::SceneStudySettings settings;
+  settings.seeds = options.scene_seeds;
+  settings.threads = options.threads;
+  if (options.quick) {
+    settings.counts = {64, 256, 1024};
+    settings.reference_samples = 16384;
+  }
+  std::vector<study::SceneStudyRecord> records;
+  bool all_ok = true;
+  for (const std::string& scene : scenes) {
+    const io::IoStatus st = study::run_scene_study(scene, settings, records, [](const study::SceneStudyRecord& r) {
+      std::fprintf(stderr, "bench: %s %s %s %.0f samples: %.3g CPU ms, err max %.3g%%\n", r.scene.c_str(), r.effect.c_str(),
+                   r.estimator.c_str(), r.samples, r.cpu_ms, r.err_max_pct);
+    });
+    if (!st.ok()) {
+      report_error(st.message);
+      all_ok = false;
+    }
+  }
+  if (records.empty()) return kExitFailure;
+  return finish_report(options.json ? study::scene_json_report(records) : study::scene_markdown_report(records),
+                       options.plot, all_ok, [&] {
+                         return study::run_gnuplot(options.plot, [&](const std::filesystem::path& png,
+                                                                     const std::filesystem::path& svg) {
+                           return study::scene_plot_script(records, png, svg);
+                         });
+                       });
+}
+
 }  // namespace
 
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& options) {
   CLI::App* cmd = app.add_subcommand("bench", "Accuracy against time of every projection method");
   cmd->add_option("inputs", options.inputs,
-                  "Equirect maps, or synthetic:band-limited|texel|sun|gradient "
+                  "Equirect maps, or synthetic:band-limited|texel|sun|gradient, or scenes (SCENE.json: each "
+                  "Monte Carlo effect of `shpack bake` against a reference of the scene) "
                   "(default: $SHPACK_DATA_DIR/*.exr, else the installed <prefix>/share/shpack/hdri/*.exr; "
                   "then the synthetic maps)");
   cmd->add_option("--methods", options.methods,
@@ -40,12 +95,18 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& options) {
       });
   cmd->add_option("--repeats", options.repeats, "Timed runs of each (default 5)")
       ->check(unsigned_integer() & CLI::Range(1u, 1000000u));
+  cmd->add_option("--seeds", options.seeds,
+                  "Draws of each random method (mc, qmc, is), seeds SEED, SEED+1, ...: errors are their RMS "
+                  "with the 10th and 90th percentiles (default 16)")
+      ->check(unsigned_integer() & CLI::Range(1u, 1000000u));
   cmd->add_option("--threads", options.threads,
                   "Threads for exact, center and mip; the others use one (default 1; 0: all cores)")
       ->check(unsigned_integer());
   cmd->add_option("--seed", options.seed,
                   "Seed of mc, qmc and is (default " + std::to_string(kDefaultMethodSeed) + ")")
       ->check(unsigned_integer());
+  cmd->add_option("--scene-seeds", options.scene_seeds, "Bakes of a scene per sample count and estimator (default 4)")
+      ->check(unsigned_integer() & CLI::Range(1u, 1000u));
   cmd->add_flag("--quick", options.quick, "Three parameters per method instead of six or seven");
   cmd->add_flag("--json", options.json, "Print a JSON array, one record per run, instead of markdown");
   cmd->add_option("--plot", options.plot, "Also draw error against time into PREFIX.png and PREFIX.svg")
@@ -54,6 +115,12 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& options) {
 }
 
 int run_bench(const BenchOptions& options) {
+  if (!options.inputs.empty() && std::all_of(options.inputs.begin(), options.inputs.end(), is_scene))
+    return run_scene_bench(options.inputs, options);
+  if (std::any_of(options.inputs.begin(), options.inputs.end(), is_scene)) {
+    report_error("bench: give scenes (.json) or maps, not both in one run");
+    return kExitUsage;
+  }
   std::vector<MethodSpec> specs = study::full_sweep(options.quick, options.seed);
   if (!options.methods.empty() &&
       !study::parse_method_list(options.methods, options.quick, options.seed, specs).ok())
@@ -73,7 +140,7 @@ int run_bench(const BenchOptions& options) {
       std::fprintf(stderr, "bench: no bundled maps in %s; measuring the synthetic maps only\n", dir.c_str());
   }
 
-  const study::StudySettings settings{options.repeats, options.threads};
+  const study::StudySettings settings{options.repeats, options.threads, options.seeds};
   std::vector<study::StudyRecord> records;
   bool all_ok = true;
   for (const std::string& input : inputs) {
@@ -86,18 +153,8 @@ int run_bench(const BenchOptions& options) {
     }
   }
   if (records.empty()) return kExitFailure;
-  std::cout << (options.json ? study::json_report(records) : study::markdown_report(records)) << std::flush;
-  if (!std::cout) {
-    report_error("stdout: cannot write the report");
-    return kExitFailure;
-  }
-  if (!options.plot.empty()) {
-    if (io::IoStatus st = study::write_plot(records, options.plot); !st.ok()) {
-      report_error(st.message);
-      return kExitFailure;
-    }
-  }
-  return all_ok ? kExitOk : kExitFailure;
+  return finish_report(options.json ? study::json_report(records) : study::markdown_report(records), options.plot,
+                       all_ok, [&] { return study::write_plot(records, options.plot); });
 }
 
 }  // namespace shpack::cli

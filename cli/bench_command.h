@@ -4,8 +4,10 @@
 // found from the command's own path, or $SHPACK_DATA_DIR/*.exr; then the synthetic maps of
 // bench/study/include/shpack/study/study_inputs.h) and each method and parameter
 // (method_sweep.h), the error against exact (accuracy.h) and the time of the projection
-// (study.h). stdout gets a markdown report, or with --json a JSON array; --plot PREFIX
-// draws PREFIX.png and PREFIX.svg (plot.h). Progress goes to stderr, one line per run.
+// (study.h); a random method's error over --seeds draws (draws.h); the machine's load
+// average while it was timed (load_average.h). stdout gets a markdown report, or with --json
+// a JSON array; --plot PREFIX draws PREFIX.png and PREFIX.svg (plot.h). Progress goes to
+// stderr, one line per run.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -22,6 +24,8 @@ struct BenchOptions {
   std::vector<std::string> inputs;  // files or synthetic:NAME; empty: the defaults
   std::string methods;              // --methods; empty: every method's sweep
   unsigned repeats = 5;             // timed runs per method and parameter
+  unsigned seeds = 16;              // draws of each random method (mc, qmc, is) per parameter
+  unsigned scene_seeds = 4;         // bakes of a scene per sample count and estimator
   unsigned threads = 1;             // for exact, center, mip; 0: all cores
   std::uint64_t seed = kDefaultMethodSeed;
   bool quick = false;               // a shorter sweep (CI)

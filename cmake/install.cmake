@@ -5,10 +5,12 @@
 # so that an importer writes
 #   find_package(shpack 0.1 REQUIRED)
 #   target_link_libraries(importer PRIVATE shpack::core)   # or shpack::c
-# Also the shpack command (bin/shpack) and the bundled maps it measures when `shpack bench` is
+# Also the shpack command (bin/shpack), its OpenImageIO module (lib/shpack/libshpack_oiio.so,
+# opened on first use; lib/io/CMakeLists.txt), its man page (share/man/man1/shpack.1, made by
+# help2man from `shpack --help`) and the bundled maps it measures when `shpack bench` is
 # given no inputs (share/shpack/hdri: data/hdri's EXRs, README and licence; the command finds
 # them from its own path, bin/../share/shpack/hdri). lib/io is not installed as a library: it
-# needs OpenImageIO and serves the command. tests/install_consumer builds a project against
+# needs OpenEXR and OpenSSL and serves the command. tests/install_consumer builds a project against
 # the installed tree.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -33,8 +35,21 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/shpackConfigVersion.cmake
 install(FILES ${PROJECT_BINARY_DIR}/shpackConfig.cmake ${PROJECT_BINARY_DIR}/shpackConfigVersion.cmake
   DESTINATION ${SHPACK_INSTALL_CMAKEDIR})
 
-# The command and its data.
+# The command, its module and its data.
 install(TARGETS shpack RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS shpack_oiio LIBRARY DESTINATION ${SHPACK_PLUGIN_INSTALL_DIR})
+find_program(SHPACK_HELP2MAN help2man)
+if(SHPACK_HELP2MAN)
+  add_custom_command(OUTPUT ${PROJECT_BINARY_DIR}/shpack.1
+    COMMAND ${SHPACK_HELP2MAN} --no-info --name "HDR environment maps to Unity L2 spherical harmonics"
+            --output ${PROJECT_BINARY_DIR}/shpack.1 $<TARGET_FILE:shpack>
+    DEPENDS shpack
+    COMMENT "Generating the man page shpack.1 from shpack --help")
+  add_custom_target(shpack_man ALL DEPENDS ${PROJECT_BINARY_DIR}/shpack.1)
+  install(FILES ${PROJECT_BINARY_DIR}/shpack.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+else()
+  message(STATUS "help2man not found (scripts/install-deps.sh installs it): no man page is installed")
+endif()
 file(GLOB shpack_bundled_maps ${PROJECT_SOURCE_DIR}/data/hdri/*.exr)
 install(FILES ${shpack_bundled_maps} ${PROJECT_SOURCE_DIR}/data/hdri/README.md
               ${PROJECT_SOURCE_DIR}/data/hdri/license.txt

@@ -17,8 +17,10 @@ packages=(
   libgtest-dev                   # tests/
   libbenchmark-dev               # bench/
   mono-mcs mono-runtime          # tests/unity: the Unity package's C# compiled and run under Mono
+  libnewtonsoft-json-cil-dev     # tests/unity: Json.NET, which the package reads documents with
   clang libclang-rt-14-dev       # tests/fuzz: libFuzzer targets (clang++ -fsanitize=fuzzer)
   gnuplot-nox                    # shpack bench --plot
+  help2man                       # the man page that cmake --install installs, from shpack --help
 )
 
 missing=()

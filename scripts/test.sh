@@ -8,19 +8,26 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-./scripts/install-deps.sh
+# Each step's wall time goes to stderr, so that a slow run says where its time went.
+step() {
+  local start=$SECONDS
+  "$@"
+  echo "test.sh: $((SECONDS - start)) s: $*" >&2
+}
+
+step ./scripts/install-deps.sh
 # -g1: line tables for the sanitizers' reports, without the full debug info that makes the
 # build and link slower (CI should stay under 15 minutes on two cores).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
   -DSHPACK_WERROR=ON -DSHPACK_SANITIZE=ON -DSHPACK_BUILD_BENCH=OFF  # the benchmarks are not run here
-cmake --build build-asan -j"$(nproc)"
-ctest --test-dir build-asan --output-on-failure -j2 -LE large
+step cmake --build build-asan -j"$(nproc)"
+step ctest --test-dir build-asan --output-on-failure -j2 -LE large
 
 cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DSHPACK_FUZZ_SECONDS=10 -DSHPACK_BUILD_FUZZERS=ON -DSHPACK_BUILD_TESTS=OFF -DSHPACK_BUILD_BENCH=OFF
-cmake --build build-fuzz -j"$(nproc)" --target shpack_fuzzers
-ctest --test-dir build-fuzz --output-on-failure -j2 -L fuzz
+step cmake --build build-fuzz -j"$(nproc)" --target shpack_fuzzers
+step ctest --test-dir build-fuzz --output-on-failure -j2 -L fuzz
 
 cmake -S . -B build-large -DCMAKE_BUILD_TYPE=Release -DSHPACK_WERROR=ON -DSHPACK_BUILD_BENCH=OFF
-cmake --build build-large -j"$(nproc)" --target shpack shpack_large_tests
-ctest --test-dir build-large --output-on-failure -L large
+step cmake --build build-large -j"$(nproc)" --target shpack shpack_large_tests
+step ctest --test-dir build-large --output-on-failure -L large

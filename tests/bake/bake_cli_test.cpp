@@ -3,26 +3,20 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "bake_support.h"
 #include "scene/scene_files.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-// Runs the built command through the shell; returns its exit code, stderr in `err`.
-int run(const std::string& args, std::string& err) {
-  const fs::path err_file = shpack_test::scene_scratch() / "stderr.txt";
-  const std::string command = std::string(SHPACK_CLI_PATH) + " " + args + " 2> " + err_file.string();
-  const int status = std::system(command.c_str());
-  std::ifstream in(err_file);
-  err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+int run(const std::string& args, std::string& err) { return shpack_test::run_cli(args, err); }
 
 constexpr const char* kGood = R"({"probes": [[0, 1, 0], [1, 1, 0], [2, 1, 0]],
   "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 3}],
@@ -115,6 +109,78 @@ TEST(BakeCli, ThreadsBeyondTheCoresAreCapped) {
   EXPECT_EQ(err, "");
   EXPECT_EQ(nlohmann::json::parse(std::ifstream(one)), nlohmann::json::parse(std::ifstream(many)));
   EXPECT_EQ(run("bake " + scene.string() + " --threads -1", err), 2) << "not an unsigned integer";
+}
+
+}  // namespace
+
+namespace {
+
+// A sun 4 degrees wide half hidden by a box: the shadows effect samples.
+constexpr const char* kPenumbra = R"({"probes": [[0, 0, 0], [0.01, 0, 0]],
+  "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 1, "angular_diameter_deg": 4}],
+  "geometry": [{"type": "box", "min": [-100, 1, -100], "max": [0, 2, 100]}],
+  "effects": ["direct", "shadows"], "settings": )";
+
+TEST(BakeCli, EveryProbeSaysHowWrongItMayBeAndHowManySamplesItTook) {
+  const fs::path scene = shpack_test::write_scene("cli_error.json", std::string(kPenumbra) + R"({"target_error_pct": 0.5}})");
+  const fs::path out = shpack_test::scene_scratch() / "cli_error_out.json";
+  std::string err;
+  ASSERT_EQ(run("bake " + scene.string() + " -o " + out.string(), err), 0) << err;
+  EXPECT_EQ(err, "") << "the target is met: nothing to warn about";
+  const nlohmann::json doc = nlohmann::json::parse(std::ifstream(out));
+  for (const auto& probe : doc.at("probes")) {
+    const auto& d = probe.at("diagnostics");
+    EXPECT_LE(d.at("error_estimate_pct").get<double>(), 0.5);
+    EXPECT_GE(d.at("samples").at("shadows").get<int>(), 256);
+    EXPECT_TRUE(d.at("capped").empty());
+  }
+  EXPECT_EQ(doc.at("sampling").at("target_error_pct"), 0.5);
+  EXPECT_LE(doc.at("effects").at("shadows").at("error_estimate_pct_max").get<double>(), 0.5);
+  EXPECT_EQ(doc.at("effects").at("shadows").at("capped_probes"), 0);
+}
+
+TEST(BakeCli, ProbesThatReachTheCapAreCountedInOneWarning) {
+  const fs::path scene =
+      shpack_test::write_scene("cli_capped.json", std::string(kPenumbra) + R"({"target_error_pct": 1e-6, "max_samples": 512}})");
+  const fs::path out = shpack_test::scene_scratch() / "cli_capped_out.json";
+  std::string err;
+  ASSERT_EQ(run("bake " + scene.string() + " -o " + out.string(), err), 0) << err;
+  EXPECT_EQ(err.rfind("shpack: " + scene.string() + ": 2 of 2 probes reached settings.max_samples (512) before "
+                      "settings.target_error_pct (1e-06 %) in shadows; the largest error estimate left is ", 0), 0u)
+      << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  const nlohmann::json doc = nlohmann::json::parse(std::ifstream(out));
+  EXPECT_EQ(doc.at("probes")[0].at("diagnostics").at("capped"), nlohmann::json::parse(R"(["shadows"])"));
+  EXPECT_EQ(doc.at("effects").at("shadows").at("capped_probes"), 2);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(BakeCli, BenchOfASceneMeasuresEachEffectAgainstAReference) {
+  const fs::path scene = shpack_test::write_scene("cli_bench.json", std::string(kPenumbra) + "{}}");
+  const fs::path out = shpack_test::scene_scratch() / "cli_bench.out";
+  std::string err;
+  ASSERT_EQ(run("bench " + scene.string() + " --quick --scene-seeds 2 --json > " + out.string(), err), 0) << err;
+  const nlohmann::json records = nlohmann::json::parse(std::ifstream(out));
+  // shadows only (the one Monte Carlo effect here): 3 counts for each of the two estimators,
+  // and the scene's settings.
+  ASSERT_EQ(records.size(), 7u) << records.dump();
+  for (const auto& r : records) {
+    EXPECT_EQ(r.at("effect"), "shadows");
+    EXPECT_EQ(r.at("seeds"), 2);
+    EXPECT_GE(r.at("err_max_pct").get<double>(), 0.0);
+    EXPECT_LE(r.at("err_max_pct").get<double>(), r.at("err_worst_pct").get<double>());
+  }
+  EXPECT_EQ(records[0].at("estimator"), "next-events");
+  EXPECT_EQ(records[3].at("estimator"), "directions");
+  EXPECT_EQ(records[6].at("estimator"), "settings");
+  // The penumbra probe's error falls with samples, and the defaults meet their target.
+  EXPECT_LT(records[2].at("err_max_pct").get<double>(), records[0].at("err_max_pct").get<double>());
+  EXPECT_LT(records[6].at("error_estimate_pct").get<double>(), 1.0);
+  ASSERT_NE(run("bench " + scene.string() + " data/hdri/courtyard.exr", err), 0);
+  EXPECT_NE(err.find("give scenes (.json) or maps, not both"), std::string::npos) << err;
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include "bake_support.h"
 #include "scene/scene_files.h"
 #include "shpack/bake/bake.h"
 #include "shpack/convolution.h"
@@ -24,22 +25,11 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 using shpack_test::kEps;
 
-struct Baked {
-  scene::Scene scene;
-  BakeResult result;
-};
+using shpack_test::Baked;
 
 // Loads `json` as a scene file and bakes it, keeping each effect's part.
 Baked bake_json(const std::string& name, const std::string& json, unsigned threads = 2) {
-  Baked b;
-  const io::IoStatus loaded = scene::load_scene(shpack_test::write_scene(name + ".json", json), b.scene);
-  EXPECT_TRUE(loaded.ok()) << loaded.message;
-  BakeOptions options;
-  options.threads = threads;
-  options.keep_effects = true;
-  const io::IoStatus st = bake(b.scene, options, b.result);
-  EXPECT_TRUE(st.ok()) << st.message;
-  return b;
+  return shpack_test::bake_ok(name, json, threads);
 }
 
 const ShL2& part(const Baked& b, std::size_t probe, Effect e) {
@@ -73,7 +63,7 @@ std::string scene_with(const std::string& effects, const std::string& settings =
 
 TEST(Bake, GeometryWithoutAVisibilityEffectTracesNoRay) {
   const Baked b = bake_json("closed_forms", scene_with(R"("direct", "environment")"));
-  EXPECT_FALSE(b.result.geometry.built) << "no effect needs the ray tracer";
+  EXPECT_TRUE(b.result.geometry.built) << "no effect needs the ray tracer, but probe validity does";
   for (std::size_t e = 0; e < kEffectCount; ++e)
     EXPECT_EQ(b.result.costs[e].rays, 0u) << effect_name(static_cast<Effect>(e));
   EXPECT_EQ(cost(b, Effect::Direct).analytic, 18u * 8u) << "18 probes x 8 lights, each one closed form";
@@ -165,11 +155,15 @@ TEST(Bake, ASmallerSphereCentredInFrontOfASphereLightLeavesTheDifferenceOfTwoCap
   ShL2 big, small;
   ASSERT_TRUE(add_cone_light({0, 1, 0}, std::asin(0.1), radiance, big).ok());
   ASSERT_TRUE(add_cone_light({0, 1, 0}, std::asin(0.05), radiance, small).ok());
-  // Tolerance: the rule is exact on every stratum of u = cos(theta') that the occluder's rim
-  // does not cross (bake.h); on the one it crosses, the true and the estimated integrals both
-  // lie within its solid angle 2 pi (1 - cos a_L) / n_u times L max|Y_i|, n_u = ceil(sqrt(S/2)).
-  const int n_u = static_cast<int>(std::ceil(std::sqrt(samples / 2.0)));
-  const double stratum = 2 * kPi * (1 - std::sqrt(0.99)) / n_u;
+  // Tolerance: the light's points are uniform in (1 - cos theta', phi) over its cap, a
+  // scrambled (0, m, 2)-net per batch (m = samples / 8), and the hidden set is the strip
+  // 1 - cos theta' < (1 - cos a_O) of that square, whose edge is parallel to an axis: each
+  // batch has one point in every 1/m-wide strip of it, so its count of hidden points is within
+  // 1 of m times the hidden share. The visible points' sum then differs from the integral by at
+  // most one point's worth, and the smooth rest of each point's value by at most the same
+  // again: 2 (Omega_L / m) L max|Y_i|, Omega_L = 2 pi (1 - cos a_L).
+  const double m = samples / 8.0;
+  const double stratum = 2 * kPi * (1 - std::sqrt(0.99)) / m;
   const std::array<double, kShCount> max_y = {kY0, kY1, kY1, kY1, kY2 / 2, kY2 / 2, 2 * kY20, kY2 / 2, kY22};
   for (int c = 0; c < kChannelCount; ++c)
     for (int i = 0; i < kShCount; ++i) {
@@ -182,24 +176,25 @@ TEST(Bake, ASmallerSphereCentredInFrontOfASphereLightLeavesTheDifferenceOfTwoCap
 TEST(Bake, FurnaceClosedSphereGivesTheGeometricSeries) {
   // A probe inside a closed sphere of albedo a emitting Le: every path sees Le at each of its
   // vertices, weighted a^k, so after N bounces the radiance is Le (1 - a^(N+1)) / (1 - a) in
-  // every direction. Each path's estimate is exact (no variance in L_0); the first
-  // directions are stratified, so L_1.. carry Monte Carlo error: for weight 4 pi / n and
-  // |Y_i| variance <= 1 / (4 pi) under uniform sampling, 5 sigma = 5 sqrt(4 pi / n) Le_total
-  // bounds them (stratification only lowers the variance).
+  // every direction. Emission and each bounce are found both by the paths' own directions and
+  // by points of the emitter (next-event estimation), so the estimate is unbiased but not
+  // exact: the test holds it to the bake's own promise, the largest error over directions
+  // below twice its error estimate, and that estimate below 2 % at 2048 samples (about
+  // 1 / sqrt(2048) of the light, times the spread of the weights).
   const double a = 0.5, le = 2.0;
   const int paths = 2048;
   for (int n = 1; n <= 4; ++n) {
     const Baked b = bake_json("furnace", R"({"probes": [[0.1, -0.2, 0.05]],
       "geometry": [{"type": "sphere", "position": [0, 0, 0], "radius": 1, "albedo": 0.5, "emission": 2}],
       "effects": ["emission", "bounce:)" + std::to_string(n) + R"("],
-      "settings": {"sky_samples": )" + std::to_string(paths) + R"(, "bounce_samples": )" + std::to_string(paths) + "}}");
+      "settings": {"sky_samples": )" + std::to_string(paths) + R"(, "bounce_samples": )" + std::to_string(paths) +
+      R"(, "target_error_pct": 0, "invalid_probes": "keep"}})");
     const double want = le * (1 - std::pow(a, n + 1)) / (1 - a);
-    const ShL2& total = b.result.radiance[0];
-    for (int c = 0; c < kChannelCount; ++c) {
-      EXPECT_NEAR(total.c[c][0] / (2 * std::sqrt(kPi)), want, 1e-9 * want) << "N=" << n << " c=" << c;
-      const double mc = 5 * std::sqrt(4 * kPi / paths) * want;
-      for (int i = 1; i < kShCount; ++i) EXPECT_NEAR(total.c[c][i], 0.0, mc) << "N=" << n << " c=" << c << " i=" << i;
-    }
+    ShL2 uniform;
+    ASSERT_TRUE(add_ambient_light({want, want, want}, uniform).ok());
+    const double estimate = b.result.error_estimate_pct[0];
+    EXPECT_LT(estimate, 2.0) << "N=" << n;
+    EXPECT_LE(shpack_test::max_error_pct(b.result.radiance[0], uniform), 2 * estimate) << "N=" << n;
     EXPECT_EQ(cost(b, Effect::Bounce).samples, static_cast<std::uint64_t>(paths));
   }
 }
@@ -208,7 +203,7 @@ TEST(Bake, AnEnclosedProbeSeesNoSkyAndOneInTheOpenAllOfIt) {
   const Baked b = bake_json("enclosed", R"({"probes": [[0, 0.5, 0], [3, 0.5, 0]],
     "environment": {"type": "gradient", "zenith": [0.2, 0.4, 1.0], "horizon": [0.8, 0.9, 1.0], "ground": 0.1},
     "geometry": [{"type": "box", "min": [-1, 0, -1], "max": [1, 1, 1]}],
-    "effects": ["environment", "sky_occlusion"]})");
+    "effects": ["environment", "sky_occlusion"], "settings": {"invalid_probes": "keep"}})");
   EXPECT_EQ(b.result.radiance[0], ShL2{}) << "inside the box: the sky is all hidden, exactly";
   // Outside, the box hides a little: the occlusion takes radiance away, never adds it.
   EXPECT_LT(part(b, 1, Effect::SkyOcclusion).c[0][0], 0.0);
@@ -250,7 +245,7 @@ TEST(Bake, AnEnvironmentMapIsProjectedAsConvertDoesItAndLookedUpForRays) {
   const Baked b = bake_json("map", R"({"probes": [[0, 0.5, 0], [4, 0.5, 0]],
     "environment": {"type": "map", "path": "map.exr", "rotation_deg": 30, "intensity": 2},
     "geometry": [{"type": "box", "min": [-1, 0, -1], "max": [1, 1, 1]}],
-    "effects": ["environment", "sky_occlusion"]})");
+    "effects": ["environment", "sky_occlusion"], "settings": {"invalid_probes": "keep"}})");
   Conversion projection;
   ASSERT_TRUE(io::convert_file(shpack_test::scene_scratch() / "map.exr", {}, projection).ok());
   const ShL2 want = rotate_about_y(scaled(projection.sh.radiance, 2.0), 30.0);

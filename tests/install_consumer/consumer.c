@@ -1,5 +1,6 @@
 /* Uses the installed C ABI from C: the uniform environment of consumer.cpp through
- * shpack_convert_equirect, ShadeSH9 on its shader vectors, and an error report. */
+ * shpack_convert_equirect and shpack_convert, ShadeSH9 on its shader vectors, and an error
+ * report. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -28,6 +29,22 @@ int main(void) {
     if (fabs(result.unity_sh[9 * c] - texel[c]) > 1e-6 * texel[c] || fabs(rgb[c] - texel[c]) > 1e-6 * texel[c]) {
       fprintf(stderr, "consumer_c: channel %d: sh %.9g, ShadeSH9 %.9g, want %.9g\n", c, result.unity_sh[9 * c],
               rgb[c], texel[c]);
+      return 1;
+    }
+  }
+  { /* The same texel as a 1 x 1 cross, a uniform environment in any layout, via shpack_convert. */
+    shpack_map map;
+    shpack_convert_options convert;
+    shpack_conversion out;
+    memset(&map, 0, sizeof map);
+    map.struct_size = sizeof map;
+    map.layout = SHPACK_LAYOUT_HCROSS;
+    map.image = image;
+    shpack_default_convert_options(&convert);
+    out.struct_size = sizeof out;
+    if (shpack_convert(&map, &convert, &out, &error) != SHPACK_OK ||
+        fabs(out.sh.unity_sh[0] - texel[0]) > 1e-6 * texel[0] || out.has_sun != 0) {
+      fprintf(stderr, "consumer_c: shpack_convert of a 1 x 1 cross: %s\n", error.message);
       return 1;
     }
   }

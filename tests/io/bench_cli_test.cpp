@@ -38,7 +38,8 @@ fs::path write_tiny_map(const ScratchDir& dir) {
 TEST(BenchCli, QuickJsonHasOneRecordPerRunWithTheKeys) {
   const ScratchDir dir;
   const fs::path map = write_tiny_map(dir);
-  const CliRun run = run_shpack(dir, {"bench", map.string(), "--json", "--quick", "--repeats", "2", "--seed", "7"});
+  const CliRun run = run_shpack(dir, {"bench", map.string(), "--json", "--quick", "--repeats", "2", "--seed", "7",
+                                      "--seeds", "3"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json records = nlohmann::json::parse(run.out, nullptr, /*allow_exceptions=*/false);
   ASSERT_TRUE(records.is_array()) << run.out;
@@ -46,9 +47,13 @@ TEST(BenchCli, QuickJsonHasOneRecordPerRunWithTheKeys) {
   ASSERT_EQ(records.size(), specs.size());
   for (std::size_t i = 0; i < specs.size(); ++i) {
     const nlohmann::json& r = records[i];
-    for (const char* key : {"input", "method", "param", "seed", "threads", "time_ms_median", "time_ms_min",
-                            "time_ms_max", "err_max_pct", "err_rms_pct", "coef_err_max", "min_e_over_pi"})
+    for (const char* key : {"input", "method", "param", "seed", "seeds", "threads", "time_ms_median", "time_ms_min",
+                            "time_ms_max", "err_max_pct", "err_max_pct_p10", "err_max_pct_p90", "err_rms_pct",
+                            "err_rms_pct_p10", "err_rms_pct_p90", "coef_err_max", "min_e_over_pi", "load_average"})
       EXPECT_TRUE(r.contains(key)) << key << " in record " << i;
+    EXPECT_EQ(r["seeds"], shpack::uses_seed(specs[i].method) ? 3 : 1) << r["spec"];
+    EXPECT_LE(r["err_max_pct_p10"].get<double>(), r["err_max_pct_p90"].get<double>()) << r["spec"];
+    EXPECT_EQ(r["load_average"].size(), 3u);
     EXPECT_EQ(r["input"], map.string());
     EXPECT_EQ(r["spec"], std::string(shpack::method_name(specs[i]).view()));
     EXPECT_EQ(r["seed"].is_null(), !shpack::uses_seed(specs[i].method)) << r["spec"];
@@ -75,7 +80,8 @@ TEST(BenchCli, MarkdownAndPlot) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("## All 2 inputs\n"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("## Convergence\n"), std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("\n| fib:1024 | 1024 |"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("\n| fib:1024 | 1024 | 1 |"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("\nLoad average (1 min, /proc/loadavg) while timed: "), std::string::npos) << run.out;
   EXPECT_GT(fs::file_size(dir / "plot.png"), 0u);
   EXPECT_GT(fs::file_size(dir / "plot.svg"), 0u);
   // No temporary is left: they are hidden files beside the output (atomic_write.h).
@@ -132,7 +138,8 @@ TEST(BenchCli, ErrorsAreOneLine) {
 
   for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
            {"bench", "--methods", "mc:0"}, {"bench", "--methods", "fast"}, {"bench", "--methods", "mc,"},
-           {"bench", "--repeats", "0"}, {"bench", "--threads", "-1"}, {"bench", "--seed", "-1"}}) {
+           {"bench", "--repeats", "0"}, {"bench", "--threads", "-1"}, {"bench", "--seed", "-1"},
+           {"bench", "--seeds", "0"}}) {
     run = run_shpack(dir, args);
     EXPECT_EQ(run.exit_code, 2) << args[2] << "\n" << run.err;
     EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << run.err;

@@ -1,13 +1,19 @@
 // The C ABI (shpack_c.h): the same numbers as the CLI's JSON, bit for bit, for the same
-// texels and options; streaming equals one shot; errors are codes with static messages; and
-// the shared library exports nothing but the shpack_* functions.
+// texels and options (every layout, the six faces, the sampling methods, the sun, every
+// option of shpack_convert); streaming equals one shot; errors are codes with static
+// messages; and the shared library exports nothing but the shpack_* functions.
 #include <gtest/gtest.h>
 
+#include <half.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <limits>
 #include <string>
 #include <vector>
@@ -54,6 +60,88 @@ void expect_result_is_document(const shpack_result& r, const Json& doc) {
           << kShaderKeys[v] << "[" << k << "]";
   EXPECT_EQ(r.negative_texels, doc["diagnostics"]["negative_texels"].get<std::uint64_t>());
   EXPECT_EQ(r.nonfinite_texels, doc["diagnostics"]["nonfinite_texels"].get<std::uint64_t>());
+}
+
+void expect_same_doubles(const double* got, const Json& want, std::size_t count, const char* what) {
+  ASSERT_EQ(want.size(), count) << what;
+  for (std::size_t k = 0; k < count; ++k)
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(got[k]), std::bit_cast<std::uint64_t>(want[k].get<double>()))
+        << what << "[" << k << "]";
+}
+
+// The sun of shpack_convert is the document's "sun", bit for bit.
+void expect_light_is_document(const shpack_light& light, const Json& sun) {
+  expect_same_doubles(light.direction, sun["direction"], 3, "direction");
+  expect_same_doubles(light.irradiance, sun["irradiance"], 3, "irradiance");
+  expect_same_doubles(light.sky_level, sun["sky_level"], 3, "sky_level");
+  EXPECT_EQ(light.angular_radius_deg, sun["angular_radius_deg"].get<double>());
+  EXPECT_EQ(light.solid_angle_sr, sun["solid_angle_sr"].get<double>());
+  EXPECT_EQ(light.texels, sun["texels"].get<std::uint64_t>());
+  const Json& unity = sun["unity_light"];
+  expect_same_doubles(light.forward, unity["forward"], 3, "forward");
+  expect_same_doubles(light.euler_deg, unity["euler_deg"], 3, "euler_deg");
+  expect_same_doubles(light.quaternion, unity["quaternion"], 4, "quaternion");
+  expect_same_doubles(light.color, unity["color"], 3, "color");
+  expect_same_doubles(light.color_srgb, unity["color_srgb"], 3, "color_srgb");
+  EXPECT_EQ(light.intensity, unity["intensity"].get<double>());
+}
+
+// Texels in [-0.125, 2) from a fixed generator, a few negative: the comparisons are bit for
+// bit, so any values do, and varied ones exercise every coefficient.
+std::vector<float> noise_texels(std::uint32_t width, std::uint32_t height, std::uint32_t seed) {
+  std::vector<float> pixels(std::size_t{width} * height * 3);
+  std::uint32_t state = seed;
+  for (float& v : pixels) {
+    state = state * 1664525u + 1013904223u;
+    v = static_cast<float>(state >> 8) / static_cast<float>(1u << 23) - 0.125f;
+  }
+  return pixels;
+}
+
+shpack_map map_of(const std::vector<float>& pixels, std::uint32_t width, std::uint32_t height, int32_t layout) {
+  shpack_map map{};
+  map.struct_size = sizeof map;
+  map.layout = layout;
+  map.image = {pixels.data(), SHPACK_PIXEL_F32, width, height, 3, 0, 0};
+  return map;
+}
+
+shpack_map equirect_map(const shpack::io::ImageFile& file) {
+  shpack_map map{};
+  map.struct_size = sizeof map;
+  map.layout = SHPACK_LAYOUT_EQUIRECT;
+  map.image = image_of(file);
+  return map;
+}
+
+shpack_convert_options convert_defaults() {
+  shpack_convert_options options;
+  shpack_default_convert_options(&options);
+  return options;
+}
+
+// shpack_convert, which must succeed.
+shpack_conversion convert_ok(const shpack_map& map, const shpack_convert_options& options) {
+  shpack_conversion out{};
+  out.struct_size = sizeof out;
+  shpack_error error{};
+  EXPECT_EQ(shpack_convert(&map, &options, &out, &error), SHPACK_OK) << error.message;
+  return out;
+}
+
+// `shpack convert` with `args`, which must succeed: its JSON document.
+Json command_document(const ScratchDir& dir, std::vector<std::string> args) {
+  args.insert(args.begin(), "convert");
+  const shpack_io_test::CliRun run = run_shpack(dir, args);
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  return run.exit_code == 0 ? Json::parse(run.out) : Json::object();
+}
+
+void expect_same_result(const shpack_result& a, const shpack_result& b) {
+  for (int k = 0; k < 27; ++k) {
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(a.radiance_sh[k]), std::bit_cast<std::uint64_t>(b.radiance_sh[k])) << k;
+    EXPECT_EQ(std::bit_cast<std::uint32_t>(a.unity_sh[k]), std::bit_cast<std::uint32_t>(b.unity_sh[k])) << k;
+  }
 }
 
 TEST(CApi, ConvertEquirectMatchesTheCommandLine) {
@@ -204,6 +292,251 @@ TEST(CApi, ShadeSh9IsUnitysShaderOnTheResult) {
   EXPECT_EQ(shpack_shade_sh9(nullptr, 0, 1, 0, rgb), SHPACK_INVALID_ARGUMENT);
 }
 
+TEST(CApiConvert, EveryLayoutMatchesTheCommandLine) {
+  const ScratchDir dir;
+  struct Case {
+    const char* name;
+    int32_t layout;
+    std::uint32_t width, height;
+  };
+  const Case cases[] = {
+      {"equirect", SHPACK_LAYOUT_EQUIRECT, 64, 32},     {"hcross", SHPACK_LAYOUT_HCROSS, 64, 48},
+      {"vcross", SHPACK_LAYOUT_VCROSS, 48, 64},         {"hstrip", SHPACK_LAYOUT_HSTRIP, 96, 16},
+      {"vstrip", SHPACK_LAYOUT_VSTRIP, 16, 96},         {"octahedral", SHPACK_LAYOUT_OCTAHEDRAL, 32, 32},
+      {"angular", SHPACK_LAYOUT_ANGULAR, 32, 32},       {"mirrorball", SHPACK_LAYOUT_MIRRORBALL, 32, 32},
+  };
+  // Every finish option at once, and the value policy, on every layout.
+  shpack_convert_options options = convert_defaults();
+  options.negative = SHPACK_NEGATIVE_CLAMP;
+  options.intensity = 0.75;
+  options.exposure_ev = 1.5;
+  options.rotate_deg = 30;
+  options.window = "hanning:3";
+  const std::vector<std::string> flags = {"--negative", "clamp", "--intensity", "0.75", "--exposure", "1.5",
+                                          "--rotate",   "30",    "--window",    "hanning:3"};
+  std::uint32_t seed = 1;
+  for (const Case& test : cases) {
+    SCOPED_TRACE(test.name);
+    const std::vector<float> pixels = noise_texels(test.width, test.height, ++seed);
+    const std::filesystem::path file = dir / (std::string(test.name) + ".exr");
+    ASSERT_TRUE(shpack_io_test::write_image(file, test.width, test.height, 3, pixels));
+    const shpack_map map = map_of(pixels, test.width, test.height, test.layout);
+    expect_result_is_document(convert_ok(map, convert_defaults()).sh,
+                              command_document(dir, {file.string(), "--layout", test.name}));
+    std::vector<std::string> args = {file.string(), "--layout", test.name};
+    args.insert(args.end(), flags.begin(), flags.end());
+    expect_result_is_document(convert_ok(map, options).sh, command_document(dir, args));
+  }
+}
+
+TEST(CApiConvert, CubeFramesAndL1MatchTheCommandLine) {
+  const ScratchDir dir;
+  const std::vector<float> pixels = noise_texels(64, 48, 7);
+  ASSERT_TRUE(shpack_io_test::write_image(dir / "cross.exr", 64, 48, 3, pixels));
+  shpack_map map = map_of(pixels, 64, 48, SHPACK_LAYOUT_AUTO);  // 4:3 is detected as hcross
+  shpack_convert_options options = convert_defaults();
+  options.l1 = 1;
+  const std::string file = (dir / "cross.exr").string();
+  const struct {
+    int32_t frame;
+    const char* name;
+  } frames[] = {{SHPACK_CUBE_FRAME_UNITY, "unity"}, {SHPACK_CUBE_FRAME_GL, "gl"}, {SHPACK_CUBE_FRAME_THREEJS, "threejs"}};
+  for (const auto& frame : frames) {
+    SCOPED_TRACE(frame.name);
+    map.cube_frame = frame.frame;
+    expect_result_is_document(convert_ok(map, options).sh,
+                              command_document(dir, {file, "--cube-frame", frame.name, "--l1"}));
+  }
+  const std::vector<float> square = noise_texels(32, 32, 8);
+  const shpack_map ambiguous = map_of(square, 32, 32, SHPACK_LAYOUT_AUTO);
+  shpack_conversion out{};
+  out.struct_size = sizeof out;
+  shpack_error error;
+  EXPECT_EQ(shpack_convert(&ambiguous, &options, &out, &error), SHPACK_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(error.message).find("cannot be detected"), std::string::npos) << error.message;
+}
+
+TEST(CApiConvert, SixFacesInUnityOrderMatchTheCommandLine) {
+  const ScratchDir dir;
+  constexpr std::uint32_t n = 16;
+  const char* names[6] = {"px", "nx", "py", "ny", "pz", "nz"};  // Unity's CubemapFace order
+  std::vector<std::vector<float>> faces;
+  shpack_map map{};
+  map.struct_size = sizeof map;
+  map.layout = SHPACK_LAYOUT_FACES;
+  map.cube_frame = SHPACK_CUBE_FRAME_GL;
+  for (int f = 0; f < 6; ++f) {
+    faces.push_back(noise_texels(n, n, 20 + f));
+    ASSERT_TRUE(shpack_io_test::write_image(dir / ("face_" + std::string(names[f]) + ".exr"), n, n, 3, faces[f]));
+    map.faces[f] = {faces[f].data(), SHPACK_PIXEL_F32, n, n, 3, 0, 0};
+  }
+  shpack_convert_options options = convert_defaults();
+  options.rotate_deg = 45;
+  options.window = "sloan";
+  const Json doc = command_document(
+      dir, {"--faces", (dir / "face_{face}.exr").string(), "--cube-frame", "gl", "--rotate", "45", "--window", "sloan"});
+  const shpack_conversion top_down = convert_ok(map, options);
+  expect_result_is_document(top_down.sh, doc);
+
+  // The same +Y face stored bottom-up (as Texture2D.GetPixels returns rows) is a view with a
+  // negative row stride onto its last row: the same texels, the same result.
+  std::vector<float> bottom_up(faces[2].size());
+  for (std::uint32_t y = 0; y < n; ++y)
+    std::copy_n(faces[2].begin() + std::ptrdiff_t{3 * n} * y, 3 * n, bottom_up.begin() + std::ptrdiff_t{3 * n} * (n - 1 - y));
+  map.faces[2] = {bottom_up.data() + 3 * n * (n - 1), SHPACK_PIXEL_F32, n, n, 3, 0, -static_cast<int64_t>(12 * n)};
+  expect_same_result(convert_ok(map, options).sh, top_down.sh);
+}
+
+TEST(CApiConvert, SamplingMethodsMatchTheCommandLine) {
+  const ScratchDir dir;
+  shpack::io::ImageFile file;
+  ASSERT_TRUE(shpack::io::read_image_file(hdri("courtyard.exr"), file).ok());
+  const shpack_map map = equirect_map(file);
+  for (const char* method : {"center", "mip:3", "qmc:4096:7", "fib:2000", "cube-exact:16", "lsq:64"}) {
+    SCOPED_TRACE(method);
+    shpack_convert_options options = convert_defaults();
+    options.method = method;
+    options.threads = 2;
+    expect_result_is_document(convert_ok(map, options).sh,
+                              command_document(dir, {hdri("courtyard.exr").string(), "--method", method}));
+  }
+}
+
+TEST(CApiConvert, TheExtractedSunMatchesTheCommandLine) {
+  const ScratchDir dir;
+  shpack::io::ImageFile file;
+  ASSERT_TRUE(shpack::io::read_image_file(hdri("sunset.exr"), file).ok());
+  shpack_map map = equirect_map(file);
+  shpack_convert_options options = convert_defaults();
+  options.extract_sun = 1;
+  options.rotate_deg = 20;
+  options.exposure_ev = -1;
+  const Json doc = command_document(
+      dir, {hdri("sunset.exr").string(), "--extract-sun", "--rotate", "20", "--exposure", "-1"});
+  const shpack_conversion out = convert_ok(map, options);
+  ASSERT_EQ(out.has_sun, 1);
+  ASSERT_TRUE(doc["sun"].is_object());
+  expect_result_is_document(out.sh, doc);
+  expect_light_is_document(out.sun, doc["sun"]);
+
+  // The caller's pixels are not written: the sun is taken out of a copy.
+  shpack::io::ImageFile again;
+  ASSERT_TRUE(shpack::io::read_image_file(hdri("sunset.exr"), again).ok());
+  EXPECT_EQ(file.pixels, again.pixels);
+
+  // Bottom-up rows (a negative row stride) are copied in image order: the same sun.
+  const std::size_t row = std::size_t{file.width} * file.channels;
+  std::vector<float> flipped(file.pixels.size());
+  for (std::uint32_t y = 0; y < file.height; ++y)
+    std::copy_n(file.pixels.begin() + row * y, row, flipped.begin() + row * (file.height - 1 - y));
+  map.image = {flipped.data() + row * (file.height - 1), SHPACK_PIXEL_F32, file.width, file.height, file.channels, 0,
+               -static_cast<int64_t>(row * sizeof(float))};
+  const shpack_conversion flipped_out = convert_ok(map, options);
+  expect_same_result(flipped_out.sh, out.sh);
+  expect_light_is_document(flipped_out.sun, doc["sun"]);
+
+  // A map without a sun: has_sun 0, as the document's null.
+  ASSERT_TRUE(shpack::io::read_image_file(hdri("studio.exr"), file).ok());
+  map.image = image_of(file);
+  EXPECT_EQ(convert_ok(map, options).has_sun, 0);
+}
+
+TEST(CApiConvert, HalfFloatTexelsAreCopiedExactlyForTheSun) {
+  // extract_sun works on an F32 copy of the caller's view: F16 texels become the floats they
+  // are exactly, so an F16 map and the F32 map of the same values give the same bits.
+  shpack::io::ImageFile file;
+  ASSERT_TRUE(shpack::io::read_image_file(hdri("sunset.exr"), file).ok());
+  std::vector<std::uint16_t> halves(file.pixels.size());
+  std::vector<float> floats(file.pixels.size());
+  for (std::size_t k = 0; k < halves.size(); ++k) {
+    const half h(file.pixels[k] / 64.0f);  // / 64: exact, and the sun stays below half's largest value
+    halves[k] = h.bits();
+    floats[k] = static_cast<float>(h);
+  }
+  shpack_map map = map_of(floats, file.width, file.height, SHPACK_LAYOUT_EQUIRECT);
+  shpack_convert_options options = convert_defaults();
+  options.extract_sun = 1;
+  const shpack_conversion from_floats = convert_ok(map, options);
+  map.image = {halves.data(), SHPACK_PIXEL_F16, file.width, file.height, 3, 0, 0};
+  const shpack_conversion from_halves = convert_ok(map, options);
+  ASSERT_EQ(from_floats.has_sun, 1);
+  ASSERT_EQ(from_halves.has_sun, 1);
+  expect_same_result(from_halves.sh, from_floats.sh);
+  EXPECT_EQ(std::memcmp(&from_halves.sun, &from_floats.sun, sizeof(shpack_light)), 0);
+}
+
+TEST(CApiConvert, NonFiniteTexelsAreLocatedInTheCallersImage) {
+  // A NaN in the vertical cross's -Z cell (1, 3), which is stored rotated by 180 degrees: the
+  // error names the image's texel, not the face's.
+  constexpr std::uint32_t n = 8;
+  std::vector<float> pixels = noise_texels(3 * n, 4 * n, 3);
+  const std::uint32_t x = n + 2, y = 3 * n + 5;
+  pixels[(std::size_t{y} * 3 * n + x) * 3 + 1] = std::numeric_limits<float>::quiet_NaN();
+  shpack_map map = map_of(pixels, 3 * n, 4 * n, SHPACK_LAYOUT_VCROSS);
+  shpack_convert_options options = convert_defaults();
+  shpack_conversion out{};
+  out.struct_size = sizeof out;
+  shpack_error error;
+  EXPECT_EQ(shpack_convert(&map, &options, &out, &error), SHPACK_NONFINITE_TEXEL);
+  EXPECT_EQ(error.x, x);
+  EXPECT_EQ(error.y, y);
+  options.nonfinite = SHPACK_NONFINITE_ZERO;
+  EXPECT_EQ(convert_ok(map, options).sh.nonfinite_texels, 1u);
+
+  // Six faces: the face and its texel.
+  std::vector<std::vector<float>> faces(6, noise_texels(n, n, 4));
+  faces[4][(std::size_t{6} * n + 1) * 3] = std::numeric_limits<float>::infinity();
+  map.layout = SHPACK_LAYOUT_FACES;
+  for (int f = 0; f < 6; ++f) map.faces[f] = {faces[f].data(), SHPACK_PIXEL_F32, n, n, 3, 0, 0};
+  options.nonfinite = SHPACK_NONFINITE_ERROR;
+  EXPECT_EQ(shpack_convert(&map, &options, &out, &error), SHPACK_NONFINITE_TEXEL);
+  EXPECT_EQ(error.face, 4u);
+  EXPECT_EQ(error.x, 1u);
+  EXPECT_EQ(error.y, 6u);
+}
+
+TEST(CApiConvert, BadArgumentsAreRefusedAndLeaveTheResult) {
+  const std::vector<float> pixels = noise_texels(16, 8, 5);
+  shpack_map map = map_of(pixels, 16, 8, SHPACK_LAYOUT_EQUIRECT);
+  shpack_conversion out{};
+  out.struct_size = sizeof out;
+  out.sh.unity_sh[0] = 42.0f;  // a failed call leaves it
+  shpack_error error;
+  const auto refused = [&](const shpack_map& m, const shpack_convert_options& o) {
+    return shpack_convert(&m, &o, &out, &error) == SHPACK_INVALID_ARGUMENT && out.sh.unity_sh[0] == 42.0f;
+  };
+  shpack_convert_options options = convert_defaults();
+  options.struct_size -= 8;  // a caller compiled against another version
+  EXPECT_TRUE(refused(map, options));
+  EXPECT_NE(std::string(error.message).find("struct_size"), std::string::npos);
+  options = convert_defaults();
+  options.method = "gauss:4";
+  EXPECT_TRUE(refused(map, options));
+  options.method = "exact";
+  options.exposure_ev = 2000;  // 2^2000 is not a double
+  EXPECT_TRUE(refused(map, options));
+  EXPECT_STREQ(error.message, "intensity times 2^exposure_ev is not a finite number");
+  options.exposure_ev = 0;
+  options.extract_sun = 2;
+  EXPECT_TRUE(refused(map, options));
+  options.extract_sun = 0;
+  map.layout = 42;
+  EXPECT_TRUE(refused(map, options));
+  map.layout = SHPACK_LAYOUT_EQUIRECT;
+  map.cube_frame = 3;
+  EXPECT_TRUE(refused(map, options));
+  // What `convert` refuses on a cube: a sampling method, the sun.
+  const std::vector<float> cross = noise_texels(64, 48, 6);
+  const shpack_map cube = map_of(cross, 64, 48, SHPACK_LAYOUT_HCROSS);
+  options.method = "mc:100";
+  EXPECT_TRUE(refused(cube, options));
+  options.method = nullptr;
+  options.extract_sun = 1;
+  EXPECT_TRUE(refused(cube, options));
+  EXPECT_EQ(shpack_convert(nullptr, &options, &out, &error), SHPACK_INVALID_ARGUMENT);
+  EXPECT_STREQ(shpack_status_name(SHPACK_OUT_OF_RANGE), "out_of_range");
+}
+
 TEST(CApi, SharedLibraryExportsOnlyTheCFunctions) {
 #if defined(__linux__)
   const std::string command = std::string("nm -D --defined-only '") + SHPACK_C_LIBRARY_PATH + "'";
@@ -219,7 +552,7 @@ TEST(CApi, SharedLibraryExportsOnlyTheCFunctions) {
     ++functions;
   }
   EXPECT_EQ(::pclose(pipe), 0);
-  EXPECT_EQ(functions, 10);  // the functions of shpack_c.h
+  EXPECT_EQ(functions, 12);  // the functions of shpack_c.h
 #else
   GTEST_SKIP() << "nm -D is the check on Linux";
 #endif

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +19,8 @@
 #include "shpack/convolution.h"
 #include "shpack/sh_minimum.h"
 #include "shpack/study/accuracy.h"
+#include "shpack/study/draws.h"
+#include "shpack/study/load_average.h"
 #include "shpack/study/method_sweep.h"
 #include "shpack/study/plot.h"
 #include "shpack/study/study.h"
@@ -215,6 +218,97 @@ TEST(StudyRun, ExactIsTheReferenceAndEveryRecordIsFilled) {
   EXPECT_EQ(run_study(image, specs, {0, 1}, records).code, io::IoErrc::InvalidArgument);
 }
 
+TEST(StudyDraws, RmsAndQuantilesOfKnownValues) {
+  // rms{3, 4} = sqrt((9 + 16) / 2); type-7 quantiles of 1..10: rank h = 9 p, so
+  // p = 0.1 -> 1 + 0.9 (2 - 1) = 1.9 and p = 0.9 -> 9 + 0.1 (10 - 9) = 9.1.
+  EXPECT_NEAR(rms({3, 4}), std::sqrt(12.5), 2 * kEps * std::sqrt(12.5));
+  const std::vector<double> ten = {10, 9, 8, 7, 6, 5, 4, 3, 2, 1};
+  EXPECT_NEAR(quantile(ten, 0.1), 1.9, 4 * kEps);
+  EXPECT_NEAR(quantile(ten, 0.9), 9.1, 16 * kEps);
+  EXPECT_EQ(quantile(ten, 0.0), 1.0);
+  EXPECT_EQ(quantile(ten, 1.0), 10.0);
+  EXPECT_EQ(quantile({5}, 0.1), 5.0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(std::isnan(rms({1, nan})));
+  EXPECT_TRUE(std::isnan(quantile({1, nan}, 0.5)));
+  EXPECT_TRUE(std::isnan(rms({})));
+
+  // One draw is its own summary; several: RMS errors, the lowest minimum, the spread.
+  const AccuracyMetrics a{2, 1, 0.5, -0.25}, b{4, 3, 1.5, 0.75};
+  const DrawSummary one = summarize_draws({a});
+  EXPECT_EQ(one.accuracy.err_max_pct, 2.0);
+  EXPECT_EQ(one.accuracy.min_e_over_pi, -0.25);
+  EXPECT_EQ(one.err_max.p10, 2.0);
+  EXPECT_EQ(one.err_max.p90, 2.0);
+  const DrawSummary two = summarize_draws({a, b});
+  EXPECT_NEAR(two.accuracy.err_max_pct, std::sqrt(10.0), 4 * kEps * std::sqrt(10.0));
+  EXPECT_NEAR(two.accuracy.err_rms_pct, std::sqrt(5.0), 4 * kEps * std::sqrt(5.0));
+  EXPECT_NEAR(two.accuracy.coef_err_max, std::sqrt(1.25), 4 * kEps * std::sqrt(1.25));
+  EXPECT_EQ(two.accuracy.min_e_over_pi, -0.25);
+  EXPECT_NEAR(two.err_max.p10, 2.2, 8 * kEps);  // h = 0.1: 2 + 0.1 (4 - 2)
+  EXPECT_NEAR(two.err_rms.p90, 2.8, 8 * kEps);  // h = 0.9: 1 + 0.9 (3 - 1)
+}
+
+TEST(StudyDraws, LoadAverageIsTheFirstThreeNumbers) {
+  const std::array<double, 3> load = parse_load_average("0.25 1.07 11.5 1/81 5810\n");
+  EXPECT_EQ(load[0], 0.25);
+  EXPECT_EQ(load[1], 1.07);
+  EXPECT_EQ(load[2], 11.5);
+  const std::array<double, 3> part = parse_load_average("2.5 x");
+  EXPECT_EQ(part[0], 2.5);
+  EXPECT_TRUE(std::isnan(part[1]));
+  EXPECT_TRUE(std::isnan(part[2]));
+  EXPECT_TRUE(std::isnan(parse_load_average("")[0]));
+}
+
+// A smooth 64 x 32 map: cheap to sample under ASan, and every method converges on it.
+StudyImage smooth_map() {
+  StudyImage image{"smooth", 64, 32, 3, std::vector<float>(64 * 32 * 3)};
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = 1.0f + 0.5f * float(i % 7) / 7;
+  return image;
+}
+
+TEST(StudyRun, RandomMethodsAreMeasuredOverTheirSeedsAndTheOthersOnce) {
+  const StudyImage image = smooth_map();
+  const MethodSpec mc{SamplingMethod::MonteCarlo, 256, 40};
+  std::vector<StudyRecord> records;
+  ASSERT_TRUE(run_study(image, {mc, {SamplingMethod::Fibonacci, 256}}, {1, 1, 4}, records).ok());
+  ASSERT_EQ(records.size(), 2u);
+  EXPECT_EQ(records[0].seeds, 4u);
+  EXPECT_EQ(records[1].seeds, 1u);
+  EXPECT_EQ(records[0].spec, mc);  // the first seed names the record
+  // The same four draws one at a time, seeds 40..43: their RMS and their extremes.
+  std::vector<double> err_max;
+  for (std::uint64_t k = 0; k < 4; ++k) {
+    std::vector<StudyRecord> one;
+    ASSERT_TRUE(run_study(image, {{SamplingMethod::MonteCarlo, 256, 40 + k}}, {1, 1, 1}, one).ok());
+    err_max.push_back(one[0].accuracy.err_max_pct);
+  }
+  const double want = rms(err_max);
+  EXPECT_NEAR(records[0].accuracy.err_max_pct, want, 4 * kEps * want);
+  EXPECT_GE(records[0].err_max_spread.p10, *std::min_element(err_max.begin(), err_max.end()));
+  EXPECT_LE(records[0].err_max_spread.p90, *std::max_element(err_max.begin(), err_max.end()));
+  EXPECT_LT(records[0].err_max_spread.p10, records[0].err_max_spread.p90) << "four different draws";
+  EXPECT_EQ(records[1].err_max_spread.p10, records[1].accuracy.err_max_pct);
+  EXPECT_EQ(run_study(image, {mc}, {1, 1, 0}, records).code, io::IoErrc::InvalidArgument);
+}
+
+TEST(StudyRun, ExpectedErrorOfMonteCarloFallsAsNToTheMinusHalf) {
+  // mc is unbiased, so its RMS error over seeds is sqrt(variance / N) exactly: slope -1/2.
+  // Estimated from R = 16 draws, e^2 (a sum of squared Gaussian-like errors, at worst one
+  // chi-square degree of freedom, relative sd sqrt 2) has relative sd <= sqrt(2 / 16), so the
+  // RMS e has <= 0.18, i.e. sd 0.18 in log e. The least-squares slope over 4 points spaced
+  // ln 4 apart has sd 0.18 / sqrt(sum (x - mean)^2) = 0.18 / (ln 4 sqrt 5) = 0.058; 4 sd: 0.23.
+  const StudyImage image = smooth_map();
+  std::vector<MethodSpec> specs;
+  for (const std::uint32_t n : {64u, 256u, 1024u, 4096u}) specs.push_back({SamplingMethod::MonteCarlo, n, 1});
+  std::vector<StudyRecord> records;
+  ASSERT_TRUE(run_study(image, specs, {1, 1, 16}, records).ok());
+  const std::vector<ConvergenceFit> fits = convergence_fits(records);
+  ASSERT_EQ(fits.size(), 1u);
+  EXPECT_NEAR(fits[0].slope, -0.5, 0.23);
+}
+
 // Records whose error falls exactly as samples^-1/2 (Monte Carlo) and samples^-1 (a grid).
 std::vector<StudyRecord> power_law_records() {
   std::vector<StudyRecord> records;
@@ -275,6 +369,11 @@ TEST(StudyReport, JsonWritesEveryKeyAndNaNAsNull) {
   EXPECT_EQ(j[0]["param"], 64);
   EXPECT_EQ(j[0]["seed"], kDefaultMethodSeed);
   EXPECT_TRUE(j[1]["seed"].is_null());  // riemann takes no seed
+  for (const char* key : {"seeds", "err_max_pct_p10", "err_max_pct_p90", "err_rms_pct_p10", "err_rms_pct_p90"})
+    EXPECT_TRUE(j[1].contains(key)) << key;
+  EXPECT_EQ(j[1]["seeds"], 1);
+  ASSERT_TRUE(j[1]["load_average"].is_array());
+  EXPECT_EQ(j[1]["load_average"].size(), 3u);
 }
 
 TEST(StudyReport, PlotScriptDrawsEachMethodTheFrontAndExact) {
@@ -290,6 +389,23 @@ TEST(StudyReport, PlotScriptDrawsEachMethodTheFrontAndExact) {
   EXPECT_NE(gp.find("title 'riemann'"), std::string::npos) << gp;
   EXPECT_NE(gp.find("title 'Pareto front'"), std::string::npos) << gp;
   EXPECT_NE(gp.find("'exact (error 0)'"), std::string::npos) << gp;
+  EXPECT_EQ(gp.find("filledcurves"), std::string::npos) << "one draw each: no spread to draw";
+}
+
+TEST(StudyReport, PlotDrawsTheSpreadOfARandomMethodAsABand) {
+  std::vector<StudyRecord> records = power_law_records();
+  for (StudyRecord& r : records) {
+    if (r.spec.method != SamplingMethod::MonteCarlo) continue;
+    r.seeds = 16;
+    r.err_max_spread = {0.5 * r.accuracy.err_max_pct, 2 * r.accuracy.err_max_pct};
+  }
+  const std::string gp = plot_script(records, "a.png", "a.svg");
+  // mc:64's row: time, error, p10, p90; drawn as a band before its line, riemann without.
+  EXPECT_NE(gp.find("\n0.0064 37.5 18.75 75\n"), std::string::npos) << gp;
+  const std::size_t band = gp.find("using 1:3:4 with filledcurves");
+  ASSERT_NE(band, std::string::npos) << gp;
+  EXPECT_LT(band, gp.find("title 'mc'")) << gp;
+  EXPECT_EQ(gp.find("using 1:3:4", band + 1), std::string::npos) << "only mc has a band\n" << gp;
 }
 
 TEST(StudyReport, ParetoFrontKeepsOnlyWhatNoFasterSpecBeats) {

@@ -194,7 +194,9 @@ void expect_turned_triangle(const Scene& scene, const std::string& what) {
   ASSERT_EQ(scene.geometry.size(), 1u) << what;
   const std::vector<float>& v = scene.geometry[0].vertices;
   ASSERT_EQ(v.size(), 9u) << what;
-  EXPECT_EQ(scene.geometry[0].indices, (std::vector<std::uint32_t>{0, 1, 2})) << what;
+  // Mirrored into Unity's frame, the triangle is listed in the reverse order, so that its
+  // counter-clockwise front stays its front.
+  EXPECT_EQ(scene.geometry[0].indices, (std::vector<std::uint32_t>{0, 2, 1})) << what;
   // Vertex 1, (1, 0, 0): scaled to (3, 0, 0), turned about +Y by 90 degrees (right-handed:
   // x -> -z) to (0, 0, -3), moved to (2, 0, -3); in Unity's frame z -> -z: (2, 0, 3).
   EXPECT_NEAR(v[3], 2.0f, 1e-6) << what;

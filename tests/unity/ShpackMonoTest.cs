@@ -1,24 +1,25 @@
-// ShpackMonoTest.cs - the Unity package (unity/) under Mono, without Unity: a map made in
-// memory is converted through P/Invoke (ShpackNative over libshpack_c) and by the shpack
-// command (from the same texels written as PFM), and the two must agree bit for bit; the
-// editor script's JSON reading and probe assignment, and the command's C# output (the class
-// ShpackStudio, compiled into this test), must give the document's floats exactly.
+// ShpackMonoTest.cs - the Unity package (unity/) under Mono, without Unity: maps made in
+// memory are converted through P/Invoke (ShpackNative over libshpack_c) and by the shpack
+// command (from the same texels written as PFM), and the two must agree bit for bit
+// (ShpackMonoTestConvert.cs); the editor scripts' commands must put the document's or the
+// conversion's exact floats into the stubbed scene, through Undo, with the scene marked
+// dirty (ShpackMonoTestEditor.cs); and the command's C# output (the class ShpackStudio,
+// compiled into this test) must give the document's floats exactly.
 //
 // Usage: mono ShpackMonoTest.exe <shpack command> <work folder> <studio.json>
 // Exit code 0 when every check passes; each failure is printed.
 using System;
-using System.Collections.Generic;
 using System.Diagnostics;
 using System.IO;
 using System.Text;
 using Shpack;
-using Shpack.Editor;
 using UnityEngine;
 using UnityEngine.Rendering;
 
-static class ShpackMonoTest
+static partial class ShpackMonoTest
 {
     static int failures;
+    static string cli, work;
 
     static void Check(bool ok, string what)
     {
@@ -36,11 +37,28 @@ static class ShpackMonoTest
             Check(Bits(got[k]) == Bits(want[k]), what + "[" + k + "]: " + got[k].ToString("R") + " != " + want[k].ToString("R"));
     }
 
+    static void CheckSameDoubles(double[] got, double[] want, string what)
+    {
+        Check(got.Length == want.Length, what + ": length " + got.Length + " != " + want.Length);
+        for (int k = 0; k < Math.Min(got.Length, want.Length); ++k)
+            Check(BitConverter.DoubleToInt64Bits(got[k]) == BitConverter.DoubleToInt64Bits(want[k]),
+                  what + "[" + k + "]: " + got[k].ToString("R") + " != " + want[k].ToString("R"));
+    }
+
     static void CheckProbe(SphericalHarmonicsL2 sh, float[] want, string what)
     {
         for (int c = 0; c < 3; ++c)
             for (int i = 0; i < 9; ++i)
                 Check(Bits(sh[c, i]) == Bits(want[9 * c + i]), what + " sh[" + c + ", " + i + "]");
+    }
+
+    // The native result is the command's document: the 27 floats, the 28 shader floats and
+    // the 27 radiance doubles as the package's JSON reader reads them back.
+    static void CheckResultIsDocument(ShpackResult native, ShpackProbeData document, string what)
+    {
+        CheckSameFloats(native.UnitySh, document.UnitySh, what + ": sphericalHarmonicsL2");
+        CheckSameFloats(native.Shader, document.Shader, what + ": shader");
+        CheckSameDoubles(native.RadianceSh, document.RadianceSh, what + ": radiance_sh");
     }
 
     // A 128 x 64 sky in memory: a vertical gradient, a warm sun disc of 3 degrees at
@@ -68,88 +86,75 @@ static class ShpackMonoTest
         return pixels;
     }
 
-    // Portable Float Map: "PF", size, -1 (little-endian), then rows from the bottom up.
-    static void WritePfm(string path, float[] pixels, int width, int height)
+    // RGB texels in [0, 2) from a fixed generator: the comparisons are bit for bit, so any
+    // values do.
+    static float[] Noise(int width, int height, uint seed)
     {
+        var pixels = new float[width * height * 3];
+        uint state = seed;
+        for (int k = 0; k < pixels.Length; ++k)
+        {
+            state = unchecked(state * 1664525u + 1013904223u);
+            pixels[k] = (state >> 8) / (float)(1 << 23);
+        }
+        return pixels;
+    }
+
+    // Portable Float Map: "PF", size, -1 (little-endian), then rows from the bottom up.
+    static string WritePfm(string name, float[] pixels, int width, int height)
+    {
+        string path = Path.Combine(work, name);
         using (var file = new BinaryWriter(File.Create(path)))
         {
             file.Write(Encoding.ASCII.GetBytes("PF\n" + width + " " + height + "\n-1.0\n"));
             for (int y = height - 1; y >= 0; --y)
                 for (int k = 0; k < width * 3; ++k) file.Write(pixels[3 * y * width + k]);  // BinaryWriter: little-endian
         }
+        return path;
     }
 
-    static void RunCli(string cli, string arguments)
+    // `shpack convert <arguments> -o <work>/<output>`; returns the output's path.
+    static string RunCli(string arguments, string output)
     {
-        var info = new ProcessStartInfo(cli, arguments) { UseShellExecute = false, RedirectStandardError = true };
+        string path = Path.Combine(work, output);
+        var info = new ProcessStartInfo(cli, "convert " + arguments + " -o \"" + path + "\"") { UseShellExecute = false, RedirectStandardError = true };
         using (Process process = Process.Start(info))
         {
             string err = process.StandardError.ReadToEnd();
             process.WaitForExit();
-            if (process.ExitCode != 0) throw new Exception("shpack " + arguments + " failed: " + err);
+            if (process.ExitCode != 0) throw new Exception("shpack convert " + arguments + " failed: " + err);
         }
+        return path;
+    }
+
+    // RGB floats, rows from the top, as Colors in the order Texture2D.GetPixels returns them:
+    // rows from the bottom.
+    static Color[] BottomUpColors(float[] pixels, int width, int height)
+    {
+        var colors = new Color[width * height];
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x)
+            {
+                int k = 3 * (y * width + x);
+                colors[(height - 1 - y) * width + x] = new Color(pixels[k], pixels[k + 1], pixels[k + 2], 1f);
+            }
+        return colors;
     }
 
     static int Main(string[] args)
     {
-        string cli = args[0], work = args[1], studioJson = args[2];
+        cli = args[0];
+        work = args[1];
+        string studioJson = args[2];
         Directory.CreateDirectory(work);
         Check(ShpackNative.IsCompatible(), "the loaded shpack_c has the ABI version of ShpackNative");
 
-        // 1. P/Invoke and the command on the same texels.
-        const int width = 128, height = 64;
-        float[] sky = MakeSky(width, height);
-        string pfm = Path.Combine(work, "sky.pfm"), json = Path.Combine(work, "sky.json");
-        WritePfm(pfm, sky, width, height);
-        RunCli(cli, "convert \"" + pfm + "\" -o \"" + json + "\" --rotate 30 --intensity 0.5 --window sloan");
-        var options = new ShpackOptions { RotateDeg = 30, Intensity = 0.5, Window = "sloan" };
-        ShpackResult native = ShpackNative.ConvertEquirect(sky, width, height, 3, options);
-        ShpackProbeData document = ShpackDocument.ReadFile(json)[0];
-        CheckSameFloats(native.UnitySh, document.UnitySh, "sphericalHarmonicsL2");
-        CheckSameFloats(native.Shader, document.Shader, "shader");
-        for (int k = 0; k < 27; ++k)
-            Check(BitConverter.DoubleToInt64Bits(native.RadianceSh[k]) == BitConverter.DoubleToInt64Bits(document.RadianceSh[k]),
-                  "radiance_sh[" + k + "]: " + native.RadianceSh[k].ToString("R") + " != " + document.RadianceSh[k].ToString("R"));
-        Check(native.NegativeTexels == 1, "one negative texel, got " + native.NegativeTexels);
-        float[] rgb = ShpackNative.ShadeSH9(native.Shader, 0f, 1f, 0f);
-        Check(rgb[0] > 0 && rgb[1] > 0 && rgb[2] > 0, "ShadeSH9 up is positive");
+        CheckConversions();
+        CheckEditor();
 
-        // 2. Errors come back as exceptions with the library's message.
-        sky[3 * (5 * width + 9)] = float.NaN;
-        try
-        {
-            ShpackNative.ConvertEquirect(sky, width, height, 3, new ShpackOptions());
-            Check(false, "a NaN texel is an error");
-        }
-        catch (ShpackException e)
-        {
-            Check(e.Code == 3 && e.Message.Contains("x=9, y=5"), "NaN texel reported as code 3 at x=9, y=5: " + e.Message);
-        }
-
-        // 3. The editor script: the ambient probe and the baked probes take the document's floats.
-        Console.WriteLine(ShpackImporter.SetAmbientProbe(json));
-        Check(RenderSettings.ambientMode == AmbientMode.Custom, "ambient mode Custom");
-        CheckProbe(RenderSettings.ambientProbe, document.UnitySh, "ambientProbe");
-        LightmapSettings.lightProbes = new LightProbes(new[] { new Vector3(0, 1, 0), new Vector3(5, 1, 0), new Vector3(0, 1, 5) });
-        Console.WriteLine(ShpackImporter.SetBakedProbes(json));
-        foreach (SphericalHarmonicsL2 probe in LightmapSettings.lightProbes.bakedProbes) CheckProbe(probe, document.UnitySh, "bakedProbes");
-
-        // 4. The command's C# output, compiled into this test, builds the document's probe.
+        // The command's C# output, compiled into this test, builds the document's probe.
         ShpackProbeData studio = ShpackDocument.ReadFile(studioJson)[0];
         CheckProbe(ShpackStudio.Probe(), studio.UnitySh, "ShpackStudio.Probe()");
-
-        // 5. A bad document is a FormatException naming the file and the value.
-        string bad = Path.Combine(work, "bad.json");
-        File.WriteAllText(bad, File.ReadAllText(json).Replace("\"unity_SHC\"", "\"unity_SHX\""));
-        try
-        {
-            ShpackDocument.ReadFile(bad);
-            Check(false, "a document without unity_SHC is an error");
-        }
-        catch (FormatException e)
-        {
-            Check(e.Message == bad + ": /shader: missing key \"unity_SHC\"", "message: " + e.Message);
-        }
 
         Console.WriteLine(failures == 0 ? "ShpackMonoTest: all checks passed" : "ShpackMonoTest: " + failures + " failures");
         return failures == 0 ? 0 : 1;

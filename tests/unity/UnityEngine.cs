@@ -1,9 +1,10 @@
-// UnityEngine.cs - a stub of the few UnityEngine types the shpack Unity package uses, so the
+// UnityEngine.cs - a stub of the UnityEngine types the shpack Unity package uses, so the
 // package compiles and runs under Mono without Unity (tests/unity/run_mono_test.cmake). Only
 // the members the package touches, with Unity's names and signatures (Unity Scripting API);
 // SphericalHarmonicsL2 keeps Unity's value semantics and its [rgb, coefficient] indexer over
 // 27 floats (UnityCsReference, Runtime/Export/Math/SphericalHarmonicsL2.bindings.cs). Not a
-// model of Unity's behaviour beyond storing what is assigned.
+// model of Unity's behaviour beyond storing what is assigned. Objects, components and
+// textures are in UnityEngineObjects.cs and UnityEngineTextures.cs.
 using System;
 
 namespace UnityEngine
@@ -16,22 +17,43 @@ namespace UnityEngine
         public static Vector3 operator -(Vector3 a, Vector3 b) { return new Vector3(a.x - b.x, a.y - b.y, a.z - b.z); }
     }
 
-    public static class Debug
+    public struct Quaternion
     {
-        public static string LastLog;
-        public static void Log(object message) { LastLog = message.ToString(); Console.WriteLine(message); }
+        public float x, y, z, w;
+        public Quaternion(float x, float y, float z, float w) { this.x = x; this.y = y; this.z = z; this.w = w; }
     }
 
-    public static class RenderSettings
+    // Four floats, as Unity lays a Color out in memory (GetPixels arrays are read in place).
+    public struct Color
     {
+        public float r, g, b, a;
+        public Color(float r, float g, float b, float a) { this.r = r; this.g = g; this.b = b; this.a = a; }
+        public Color(float r, float g, float b) : this(r, g, b, 1f) { }
+    }
+
+    public static class Debug
+    {
+        public static string LastLog, LastWarning;
+        public static void Log(object message) { LastLog = message.ToString(); Console.WriteLine(message); }
+        public static void LogWarning(object message) { LastWarning = message.ToString(); Console.WriteLine(message); }
+    }
+
+    // Unity's RenderSettings is an Object whose per-scene instance only the engine reaches
+    // (the internal GetRenderSettings); the static members are its fields.
+    public sealed class RenderSettings : Object
+    {
+        static readonly RenderSettings instance = new RenderSettings();
+        RenderSettings() { }
+        internal static Object GetRenderSettings() { return instance; }
         public static Rendering.AmbientMode ambientMode;
         public static Rendering.SphericalHarmonicsL2 ambientProbe;
     }
 
-    public sealed class LightProbes
+    public sealed class LightProbes : Object
     {
         Vector3[] positions_;
         Rendering.SphericalHarmonicsL2[] baked_;
+        // Unity makes these only by baking; the test makes them with positions.
         public LightProbes(Vector3[] positions) { positions_ = positions; baked_ = new Rendering.SphericalHarmonicsL2[positions.Length]; }
         public int count { get { return positions_.Length; } }
         // Unity returns copies of its arrays; so does the stub.
@@ -41,11 +63,22 @@ namespace UnityEngine
             get { return (Rendering.SphericalHarmonicsL2[])baked_.Clone(); }
             set { baked_ = (Rendering.SphericalHarmonicsL2[])value.Clone(); }
         }
+        internal override Object Copy() { return new LightProbes(positions) { bakedProbes = baked_ }; }
     }
 
     public static class LightmapSettings
     {
         public static LightProbes lightProbes;
+    }
+}
+
+namespace UnityEngine.SceneManagement
+{
+    public struct Scene { }
+
+    public static class SceneManager
+    {
+        public static Scene GetActiveScene() { return new Scene(); }
     }
 }
 

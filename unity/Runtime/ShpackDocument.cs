@@ -1,13 +1,17 @@
 // ShpackDocument.cs - a shpack JSON document (docs/json-format.md) read back: the output of
-// `shpack convert`, or one probe of `shpack bake` ({"probes": [{"position": ..., ...}]}).
+// `shpack convert`, or the probes of `shpack bake` ({"probes": [{"position": ..., ...}]}),
+// through Newtonsoft Json.NET (com.unity.nuget.newtonsoft-json), since Unity's JsonUtility
+// cannot read nested arrays ([[9 R], [9 G], [9 B]]).
 //
-// Unity's JsonUtility cannot read nested arrays ([[9 R], [9 G], [9 B]]), so this has its own
-// small reader (ShpackJson). Numbers are parsed as doubles with the invariant culture; a
-// float of the document is written as the double of equal value, so the cast gives back the
-// exact float shpack computed.
+// Numbers are read as doubles (FloatParseHandling.Double): a float of the document is
+// written as the double of equal value, so the cast gives back the exact float shpack
+// computed. A value of the wrong shape is a FormatException naming the file and the JSON
+// pointer of the value.
 using System;
 using System.Collections.Generic;
 using System.IO;
+using Newtonsoft.Json;
+using Newtonsoft.Json.Linq;
 using UnityEngine;
 using UnityEngine.Rendering;
 
@@ -23,6 +27,14 @@ namespace Shpack
         public SphericalHarmonicsL2 ToSphericalHarmonicsL2() { return ShpackProbe.FromFloats(UnitySh); }
     }
 
+    // What a document holds: its probes, and the lights taken out of its map ("sun", then
+    // each of "lights" that is not the sun again), each to be added once.
+    public sealed class ShpackDocumentData
+    {
+        public List<ShpackProbeData> Probes = new List<ShpackProbeData>();
+        public List<ShpackLight> Lights = new List<ShpackLight>();
+    }
+
     public static class ShpackDocument
     {
         public const int SchemaVersion = 1;
@@ -30,102 +42,81 @@ namespace Shpack
 
         public static List<ShpackProbeData> ReadFile(string path)
         {
-            return Read(File.ReadAllText(path), path);
+            return LoadFile(path).Probes;
         }
 
-        // The probes of a document: one for `convert`, each of "probes" for `bake`. Errors
-        // (FormatException) name `source` and the JSON pointer of the value.
-        public static List<ShpackProbeData> Read(string text, string source)
+        public static ShpackDocumentData LoadFile(string path)
         {
-            object root = ShpackJson.Parse(text, source);
-            var doc = Expect<Dictionary<string, object>>(root, source, "");
-            var probes = new List<ShpackProbeData>();
-            object list;
+            return Load(File.ReadAllText(path), path);
+        }
+
+        // The probes of a document (one for `convert`, each of "probes" for `bake`) and its lights.
+        public static ShpackDocumentData Load(string text, string source)
+        {
+            var at = new ShpackJsonPath(source);
+            JObject doc = at.Object(Parse(text, source), "");
+            var data = new ShpackDocumentData();
+            JToken list;
             if (doc.TryGetValue("probes", out list))
             {
-                var items = Expect<List<object>>(list, source, "/probes");
+                JArray items = at.Array(list, "/probes");
                 for (int k = 0; k < items.Count; ++k)
-                    probes.Add(ReadProbe(Expect<Dictionary<string, object>>(items[k], source, "/probes/" + k), source, "/probes/" + k));
-                return probes;
+                    data.Probes.Add(ReadProbe(at.Object(items[k], "/probes/" + k), at, "/probes/" + k));
+                return data;
             }
-            double version = Number(Member(doc, "schema_version", source, ""), source, "/schema_version");
+            double version = at.Number(at.Member(doc, "schema_version", ""), "/schema_version");
             if (version != SchemaVersion)
                 throw new FormatException(source + ": /schema_version: unsupported schema version " + version);
-            probes.Add(ReadProbe(doc, source, ""));
-            return probes;
-        }
-
-        static ShpackProbeData ReadProbe(Dictionary<string, object> probe, string source, string pointer)
-        {
-            var data = new ShpackProbeData { RadianceSh = new double[27], UnitySh = new float[27], Shader = new float[28] };
-            object position;
-            if (probe.TryGetValue("position", out position))
-            {
-                var p = Array(position, 3, source, pointer + "/position");
-                data.Position = new Vector3((float)Number(p[0], source, pointer + "/position/0"),
-                                            (float)Number(p[1], source, pointer + "/position/1"),
-                                            (float)Number(p[2], source, pointer + "/position/2"));
-            }
-            var radiance = Array(Member(probe, "radiance_sh", source, pointer), 3, source, pointer + "/radiance_sh");
-            var unity = Array(Member(probe, "sphericalHarmonicsL2", source, pointer), 3, source, pointer + "/sphericalHarmonicsL2");
-            for (int c = 0; c < 3; ++c)
-            {
-                var r = Array(radiance[c], 9, source, pointer + "/radiance_sh/" + c);
-                var u = Array(unity[c], 9, source, pointer + "/sphericalHarmonicsL2/" + c);
-                for (int i = 0; i < 9; ++i)
-                {
-                    data.RadianceSh[9 * c + i] = Number(r[i], source, pointer + "/radiance_sh/" + c + "/" + i);
-                    data.UnitySh[9 * c + i] = Float(u[i], source, pointer + "/sphericalHarmonicsL2/" + c + "/" + i);
-                }
-            }
-            var shader = Expect<Dictionary<string, object>>(Member(probe, "shader", source, pointer), source, pointer + "/shader");
-            for (int v = 0; v < 7; ++v)
-            {
-                string at = pointer + "/shader/" + ShaderKeys[v];
-                var vector = Array(Member(shader, ShaderKeys[v], source, pointer + "/shader"), 4, source, at);
-                for (int k = 0; k < 4; ++k) data.Shader[4 * v + k] = Float(vector[k], source, at + "/" + k);
-            }
+            data.Probes.Add(ReadProbe(doc, at, ""));
+            data.Lights = ShpackDocumentLights.Read(doc, at);
             return data;
         }
 
-        static T Expect<T>(object value, string source, string pointer) where T : class
+        // Strict JSON: numbers as doubles, dates left as strings, nothing after the document.
+        static JToken Parse(string text, string source)
         {
-            var typed = value as T;
-            if (typed == null)
-                throw new FormatException(source + ": " + (pointer.Length == 0 ? "/" : pointer) + ": expected " +
-                                          (typeof(T) == typeof(List<object>) ? "an array" : "an object"));
-            return typed;
+            try
+            {
+                using (var reader = new JsonTextReader(new StringReader(text)))
+                {
+                    reader.FloatParseHandling = FloatParseHandling.Double;
+                    reader.DateParseHandling = DateParseHandling.None;
+                    JToken root = JToken.ReadFrom(reader);
+                    if (reader.Read()) throw new JsonReaderException("unexpected text after the document");
+                    return root;
+                }
+            }
+            catch (JsonReaderException e)
+            {
+                throw new FormatException(source + ": not valid JSON: " + e.Message, e);
+            }
         }
 
-        static object Member(Dictionary<string, object> obj, string key, string source, string pointer)
+        static ShpackProbeData ReadProbe(JObject probe, ShpackJsonPath at, string pointer)
         {
-            object value;
-            if (!obj.TryGetValue(key, out value))
-                throw new FormatException(source + ": " + (pointer.Length == 0 ? "/" : pointer) + ": missing key \"" + key + "\"");
-            return value;
-        }
-
-        static List<object> Array(object value, int count, string source, string pointer)
-        {
-            var list = value as List<object>;
-            if (list == null || list.Count != count)
-                throw new FormatException(source + ": " + pointer + ": expected an array of " + count + " elements");
-            return list;
-        }
-
-        static double Number(object value, string source, string pointer)
-        {
-            if (!(value is double)) throw new FormatException(source + ": " + pointer + ": expected a number");
-            double d = (double)value;
-            if (double.IsNaN(d) || double.IsInfinity(d)) throw new FormatException(source + ": " + pointer + ": expected a finite number");
-            return d;
-        }
-
-        static float Float(object value, string source, string pointer)
-        {
-            float f = (float)Number(value, source, pointer);
-            if (float.IsInfinity(f)) throw new FormatException(source + ": " + pointer + ": out of float32 range");
-            return f;
+            var data = new ShpackProbeData { RadianceSh = new double[27], UnitySh = new float[27], Shader = new float[28] };
+            JToken position;
+            if (probe.TryGetValue("position", out position))
+            {
+                double[] p = at.Numbers(position, 3, pointer + "/position");
+                data.Position = new Vector3((float)p[0], (float)p[1], (float)p[2]);
+            }
+            JArray radiance = at.Array(at.Member(probe, "radiance_sh", pointer), 3, pointer + "/radiance_sh");
+            JArray unity = at.Array(at.Member(probe, "sphericalHarmonicsL2", pointer), 3, pointer + "/sphericalHarmonicsL2");
+            for (int c = 0; c < 3; ++c)
+            {
+                double[] r = at.Numbers(radiance[c], 9, pointer + "/radiance_sh/" + c);
+                float[] u = at.Floats(unity[c], 9, pointer + "/sphericalHarmonicsL2/" + c);
+                System.Array.Copy(r, 0, data.RadianceSh, 9 * c, 9);
+                System.Array.Copy(u, 0, data.UnitySh, 9 * c, 9);
+            }
+            JObject shader = at.Object(at.Member(probe, "shader", pointer), pointer + "/shader");
+            for (int v = 0; v < 7; ++v)
+            {
+                float[] vector = at.Floats(at.Member(shader, ShaderKeys[v], pointer + "/shader"), 4, pointer + "/shader/" + ShaderKeys[v]);
+                System.Array.Copy(vector, 0, data.Shader, 4 * v, 4);
+            }
+            return data;
         }
     }
 }

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <thread>
 
+#include "shpack/study/load_average.h"
 #include "shpack/study/method_sweep.h"
 
 namespace shpack::study {
@@ -25,8 +26,8 @@ double median(std::vector<double> values) {
 io::IoStatus run_study(const StudyImage& image, const std::vector<MethodSpec>& specs,
                        const StudySettings& settings, std::vector<StudyRecord>& out,
                        const StudyProgress& progress) {
-  if (settings.repeats == 0)
-    return io::IoStatus::error(io::IoErrc::InvalidArgument, image.name, "repeats must be >= 1");
+  if (settings.repeats == 0 || settings.seeds == 0)
+    return io::IoStatus::error(io::IoErrc::InvalidArgument, image.name, "repeats and seeds must be >= 1");
   ProjectOptions options;
   options.nonfinite = NonFinite::Zero;
   options.negative = Negative::Keep;
@@ -42,9 +43,17 @@ io::IoStatus run_study(const StudyImage& image, const std::vector<MethodSpec>& s
   std::vector<StudyRecord> records;
   for (const MethodSpec& spec : specs) {
     const std::string name(method_name(spec).view());
-    ShL2 radiance;
-    if (Status st = project_with_method(image.view(), spec, options, radiance); !st.ok())
-      return io::IoStatus::error(io::IoErrc::Core, image.name, name + ": " + st.what);
+    // The draws, untimed; the first is also the timing's warm-up.
+    const unsigned seeds = uses_seed(spec.method) ? settings.seeds : 1;
+    std::vector<AccuracyMetrics> draws;
+    for (unsigned k = 0; k < seeds; ++k) {
+      MethodSpec draw = spec;
+      draw.seed += k;
+      ShL2 radiance;
+      if (Status st = project_with_method(image.view(), draw, options, radiance); !st.ok())
+        return io::IoStatus::error(io::IoErrc::Core, image.name, name + ": " + st.what);
+      draws.push_back(meter.measure(radiance));
+    }
     std::vector<double> ms;
     for (unsigned r = 0; r < settings.repeats; ++r) {
       ShL2 timed;
@@ -66,7 +75,12 @@ io::IoStatus run_study(const StudyImage& image, const std::vector<MethodSpec>& s
     record.time_ms_median = median(ms);
     record.time_ms_min = *std::min_element(ms.begin(), ms.end());
     record.time_ms_max = *std::max_element(ms.begin(), ms.end());
-    record.accuracy = meter.measure(radiance);
+    record.seeds = seeds;
+    const DrawSummary summary = summarize_draws(draws);
+    record.accuracy = summary.accuracy;
+    record.err_max_spread = summary.err_max;
+    record.err_rms_spread = summary.err_rms;
+    record.load_average = read_load_average();
     records.push_back(record);
     if (progress) progress(record, records.size(), specs.size());
   }

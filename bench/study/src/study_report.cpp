@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <thread>
 
 #include "shpack/study/method_sweep.h"
 
@@ -58,15 +59,50 @@ std::vector<std::string> inputs_in_order(const std::vector<StudyRecord>& records
   return inputs;
 }
 
+// The 1-minute load averages over the runs of `input` (every input if empty), lowest to
+// highest: how shared the cores were while the projections were timed.
+std::string load_note(const std::vector<StudyRecord>& records, const std::string& input) {
+  double low = kNaN, high = kNaN;
+  for (const StudyRecord& r : records) {
+    const double load = r.load_average[0];
+    if ((!input.empty() && r.input != input) || std::isnan(load)) continue;
+    if (!(load >= low)) low = load;
+    if (!(load <= high)) high = load;
+  }
+  if (std::isnan(low)) return "Load average: not available.";
+  return "Load average (1 min, /proc/loadavg) while timed: " + fmt(low) + (high > low ? " to " + fmt(high) : "") +
+         " on " + std::to_string(std::max(1u, std::thread::hardware_concurrency())) + " cores.";
+}
+
+// "[p10, p90]" of a random method's draws; "-" for one draw. Built piece by piece: g++ 12
+// at -O3 warns falsely (-Wrestrict) on the chain of operator+ from a literal.
+std::string fmt_spread(unsigned seeds, const Spread& s) {
+  if (seeds <= 1) return "-";
+  std::string text = "[";
+  text += fmt(s.p10);
+  text += ", ";
+  text += fmt(s.p90);
+  text += "]";
+  return text;
+}
+
+constexpr const char* kDrawsNote =
+    "Random methods (mc, qmc, is): each error is the RMS over `seeds` draws (the expected error), "
+    "[p10, p90] the 10th and 90th percentiles of the draws.";
+
 void summary_section(const std::vector<StudyRecord>& records, std::size_t input_count, std::string& md) {
   md += "## All " + std::to_string(input_count) + " inputs\n\n";
-  md += "Time: median over the inputs. Errors of E/pi in % of its mean: worst input (max), "
-        "median input (rms). Coefficient error: worst input, relative to L00.\n\n";
-  md += "| method | samples | time ms | err max % | err rms % | coef err max |\n";
-  md += "|---|---:|---:|---:|---:|---:|\n";
+  md += "Time: median over the inputs. Errors of E/pi in % of its mean: worst input (max, with the "
+        "spread of its draws), median input (rms). Coefficient error: worst input, relative to L00. ";
+  md += kDrawsNote;
+  md += " ";
+  md += load_note(records, "");
+  md += "\n\n| method | samples | seeds | time ms | err max % | p10, p90 | err rms % | coef err max |\n";
+  md += "|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const SpecSummary& s : summarize(records)) {
-    md += "| " + spec_name(s.spec) + " | " + fmt_count(s.samples) + " | " + fmt(s.time_ms) + " | " +
-          fmt(s.err_max_pct) + " | " + fmt(s.err_rms_pct) + " | " + fmt(s.coef_err_max) + " |\n";
+    md += "| " + spec_name(s.spec) + " | " + fmt_count(s.samples) + " | " + std::to_string(s.seeds) + " | " +
+          fmt(s.time_ms) + " | " + fmt(s.err_max_pct) + " | " + fmt_spread(s.seeds, s.err_max_spread) + " | " +
+          fmt(s.err_rms_pct) + " | " + fmt(s.coef_err_max) + " |\n";
   }
   md += "\n";
 }
@@ -80,7 +116,8 @@ void convergence_section(const std::vector<StudyRecord>& records, std::string& m
   for (const ConvergenceFit& fit : fits) slope[fit.method][fit.input] = fit.slope;
   md += "## Convergence\n\n";
   md += "Slope of log(err rms) against log(samples), fitted per input over the runs with an error "
-        "above 0: -0.5 is N^-1/2 (Monte Carlo), -1 is h^2 on a 2-D grid.\n\n";
+        "above 0 (for mc, qmc and is their expected error over the draws): -0.5 is N^-1/2 (Monte "
+        "Carlo), -1 is h^2 on a 2-D grid.\n\n";
   md += "| method | median |";
   for (const std::string& input : inputs) md.append(" ").append(fs::path(input).stem().string()).append(" |");
   md += "\n|---|---:|";
@@ -104,14 +141,17 @@ void input_section(const std::vector<StudyRecord>& records, const std::string& i
   for (const StudyRecord& r : records)
     if (r.input == input && first == nullptr) first = &r;
   md += "## " + input + " (" + std::to_string(first->width) + "x" + std::to_string(first->height) + ")\n\n";
-  md += "| method | samples | ms median | ms min | ms max | err max % | err rms % | coef err max | min E/pi |\n";
-  md += "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  md += load_note(records, input) + " " + kDrawsNote + "\n\n";
+  md += "| method | samples | seeds | ms median | ms min | ms max | err max % | p10, p90 | err rms % | p10, p90 "
+        "| coef err max | min E/pi |\n";
+  md += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const StudyRecord& r : records) {
     if (r.input != input) continue;
     const AccuracyMetrics& a = r.accuracy;
-    md += "| " + spec_name(r.spec) + " | " + fmt_count(r.samples) + " | " + fmt(r.time_ms_median) +
-          " | " + fmt(r.time_ms_min) + " | " + fmt(r.time_ms_max) + " | " + fmt(a.err_max_pct) + " | " +
-          fmt(a.err_rms_pct) + " | " + fmt(a.coef_err_max) + " | " + fmt(a.min_e_over_pi) + " |\n";
+    md += "| " + spec_name(r.spec) + " | " + fmt_count(r.samples) + " | " + std::to_string(r.seeds) + " | " +
+          fmt(r.time_ms_median) + " | " + fmt(r.time_ms_min) + " | " + fmt(r.time_ms_max) + " | " +
+          fmt(a.err_max_pct) + " | " + fmt_spread(r.seeds, r.err_max_spread) + " | " + fmt(a.err_rms_pct) + " | " +
+          fmt_spread(r.seeds, r.err_rms_spread) + " | " + fmt(a.coef_err_max) + " | " + fmt(a.min_e_over_pi) + " |\n";
   }
   md += "\n";
 }
@@ -130,15 +170,20 @@ std::vector<SpecSummary> summarize(const std::vector<StudyRecord>& records) {
   for (const std::string& name : order) {
     const std::vector<const StudyRecord*>& runs = by_spec[name];
     std::vector<double> time, err_max, err_rms, coef, samples;
+    const StudyRecord* worst = runs.front();  // the input of the largest err_max_pct
+    unsigned seeds = 1;
     for (const StudyRecord* r : runs) {
       time.push_back(r->time_ms_median);
       err_max.push_back(r->accuracy.err_max_pct);
       err_rms.push_back(r->accuracy.err_rms_pct);
       coef.push_back(r->accuracy.coef_err_max);
       samples.push_back(r->samples);
+      seeds = std::max(seeds, r->seeds);
+      if (r->accuracy.err_max_pct > worst->accuracy.err_max_pct || std::isnan(worst->accuracy.err_max_pct))
+        worst = r;
     }
     out.push_back({runs.front()->spec, static_cast<int>(runs.size()), median_of(time), max_of(err_max),
-                   median_of(err_rms), max_of(coef), median_of(samples)});
+                   median_of(err_rms), max_of(coef), median_of(samples), seeds, worst->err_max_spread});
   }
   return out;
 }
@@ -185,6 +230,7 @@ std::string json_report(const std::vector<StudyRecord>& records) {
     j["param"] = has_param ? Json(r.spec.param) : Json(nullptr);
     j["spec"] = spec_name(r.spec);
     j["seed"] = uses_seed(r.spec.method) ? Json(r.spec.seed) : Json(nullptr);
+    j["seeds"] = r.seeds;
     j["threads"] = r.threads;
     j["repeats"] = r.repeats;
     j["samples"] = r.samples;
@@ -192,9 +238,14 @@ std::string json_report(const std::vector<StudyRecord>& records) {
     j["time_ms_min"] = r.time_ms_min;
     j["time_ms_max"] = r.time_ms_max;
     j["err_max_pct"] = r.accuracy.err_max_pct;  // nlohmann writes NaN as null
+    j["err_max_pct_p10"] = r.err_max_spread.p10;
+    j["err_max_pct_p90"] = r.err_max_spread.p90;
     j["err_rms_pct"] = r.accuracy.err_rms_pct;
+    j["err_rms_pct_p10"] = r.err_rms_spread.p10;
+    j["err_rms_pct_p90"] = r.err_rms_spread.p90;
     j["coef_err_max"] = r.accuracy.coef_err_max;
     j["min_e_over_pi"] = r.accuracy.min_e_over_pi;
+    j["load_average"] = r.load_average;
     array.push_back(std::move(j));
   }
   return array.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";

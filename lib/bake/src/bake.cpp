@@ -13,8 +13,14 @@
 #include <system_error>
 #include <thread>
 
+#include "batch_sampling.h"
+#include "emitters.h"
 #include "environment.h"
+#include "error_estimate.h"
+#include "probe_validity.h"
 #include "sampling.h"
+#include "shpack/convolution.h"
+#include "sobol.h"
 #include "scene_lights.h"
 #include "tracer.h"
 
@@ -103,7 +109,16 @@ struct Engine {
   std::vector<ShL2> total;                             // per probe, the parts summed in pass order
   std::vector<std::array<ShL2, kEffectCount>> parts;  // per probe and effect, if kept
   EnvironmentSource environment;
+  std::vector<std::array<EffectSampling, kEffectCount>> sampling;  // per probe and effect
+  // With a target, every effect first takes kPilotSamples at every probe, only to estimate
+  // the probe's whole light (`pilot`), which each effect's target is then measured against:
+  // measured against the light of the effects before it alone, an early effect (a room's
+  // sky_occlusion, before its emission and bounce) would chase a target of a mean too small.
+  static constexpr std::uint64_t kPilotSamples = 64;
+  bool piloting = false;
+  std::vector<ShL2> pilot;
   std::unique_ptr<Tracer> tracer;
+  std::unique_ptr<EmitterSampler> emitters;
   std::vector<Bounds> bounds;
   // Ray offset off a surface point x: epsilon (1 + max|x_k|). Embree works in float (relative
   // rounding 6e-8) and its sphere roots lose more near tangency; 1e-4 clears both.
@@ -114,6 +129,10 @@ struct Engine {
   // Adds one probe's part of one effect to its total (passes run in a fixed order, so every
   // total is summed in the same order) and keeps it if asked.
   void commit(std::size_t probe, Effect e, const ShL2& part) {
+    if (piloting) {
+      add_scaled(pilot[probe], part, 1.0);
+      return;
+    }
     add_scaled(total[probe], part, 1.0);
     if (options.keep_effects) parts[probe][static_cast<std::size_t>(e)] = part;
   }
@@ -152,178 +171,364 @@ struct Engine {
     }, cost);
   }
 
-  // shadows: the closed form minus what the geometry hides (bake.h).
+  // The sample plan of an effect: its fixed count, or the scene's target and cap; in the
+  // pilot, kPilotSamples.
+  SamplePlan plan(int fixed) const {
+    if (piloting) return {0, kPilotSamples, kPilotSamples, false};
+    return {scene.settings.target_error_pct, static_cast<std::uint64_t>(std::max(1, fixed)),
+            static_cast<std::uint64_t>(std::max(1, scene.settings.max_samples))};
+  }
+  // What a target is measured against: the probe's whole light, as the pilot estimated it.
+  const ShL2& denominator(std::size_t probe) const { return pilot.empty() ? total[probe] : pilot[probe]; }
+  // The Sobol set of one batch of one (effect, probe, light, strategy): keyed, never shared.
+  SobolSet sobol(Effect e, std::size_t probe, std::size_t light, int batch, int strategy = 0) const {
+    const std::size_t key = light * 64 + static_cast<std::size_t>(batch) * 2 + static_cast<std::size_t>(strategy);
+    return SobolSet(stream(seed(), static_cast<std::uint64_t>(e), probe, key).bits());
+  }
+  void record(std::size_t probe, Effect e, const Estimate& est, Counters& n) {
+    n.samples += est.samples;
+    if (piloting) return;
+    EffectSampling& s = sampling[probe][static_cast<std::size_t>(e)];
+    s.samples = std::max(s.samples, est.samples);
+    s.capped = s.capped || est.capped;
+    s.error = combine_errors(s.error, est.error);
+  }
+  // The environment's importance sampling, or none without next events (BakeOptions).
+  const DirectionDistribution& guide() const {
+    static const DirectionDistribution none;
+    return options.next_events ? environment.distribution() : none;
+  }
+  double offset_at(const Vec3d& x) const {
+    return epsilon * (1.0 + std::max({std::fabs(x.x), std::fabs(x.y), std::fabs(x.z)}));
+  }
+
+  // shadows: the closed form minus what the geometry hides (bake.h). An extended light's
+  // batch b estimates the visible part from its points (uniform in solid angle or by area,
+  // sobol.h) with the rule's own error on the whole light spread in proportion to the visible
+  // weight: all visible gives the closed form and all hidden 0, exactly.
+  struct ShadowedLight {
+    std::size_t light = 0;
+    ShL2 closed;
+    Rgb radiance{};
+    std::array<SobolSet, kBatches> points{};
+    std::array<ShL2, kBatches> visible{}, full{};
+    std::array<double, kBatches> w_visible{}, w_total{};
+  };
+  struct ShadowState {
+    const Engine& engine;
+    Vec3d p;
+    std::vector<ShadowedLight>& lights;
+    Counters& n;
+    void extend(int b, std::uint32_t from, std::uint32_t to) {
+      for (ShadowedLight& sl : lights)
+        for (std::uint32_t i = from; i < to; ++i) {
+          const auto [u1, u2] = sl.points[b].point(i);
+          const LightSample s = light_point(engine.scene.lights[sl.light], p, u1, u2);
+          if (s.weight == 0) continue;
+          ++n.rays;
+          const Rgb w = {s.weight * sl.radiance[0], s.weight * sl.radiance[1], s.weight * sl.radiance[2]};
+          add_basis(sl.full[b], s.dir, w);
+          sl.w_total[b] += s.weight;
+          if (!engine.tracer->occluded(p, s.dir, 0.0, s.distance * (1.0 - 1e-7))) {
+            add_basis(sl.visible[b], s.dir, w);
+            sl.w_visible[b] += s.weight;
+          }
+        }
+    }
+    ShL2 value(int b, std::uint32_t m) const {
+      ShL2 out;
+      for (const ShadowedLight& sl : lights) {
+        if (sl.w_visible[b] == sl.w_total[b]) continue;
+        if (sl.w_visible[b] == 0) {
+          add_scaled(out, sl.closed, -1.0);
+          continue;
+        }
+        const double f = sl.w_visible[b] / sl.w_total[b];
+        add_scaled(out, sl.visible[b], 1.0 / m);
+        add_scaled(out, sl.closed, f - 1.0);
+        add_scaled(out, sl.full[b], -f / m);
+      }
+      return out;
+    }
+  };
   void shadows(EffectCost& cost) {
     run_pass(scene.probes.size(), threads, "shadows", options, [&](std::size_t k, Counters& n) {
       const Vec3d p = probe_at(k);
       ShL2 out;
-      LightSamples ls;
+      std::vector<ShadowedLight> extended;
       for (std::size_t l = 0; l < scene.lights.size(); ++l) {
         const scene::SceneLight& light = scene.lights[l];
         const bool any = std::any_of(bounds.begin(), bounds.end(),
                                      [&](const Bounds& b) { return can_shadow(light, p, b); });
         if (!any) {
-          ++n.analytic;  // no shape can touch the rays: the closed form stands
+          if (!piloting) ++n.analytic;  // no shape can touch the rays: the closed form stands
           continue;
         }
         ShL2 closed;
         if (!add_light(light, scene.probes[k], closed).ok() || closed == ShL2{}) continue;
-        Rng rng = stream(seed(), static_cast<std::uint64_t>(Effect::Shadows), k, l);
-        sample_light(light, p, scene.settings.shadow_samples, rng, ls);
-        if (ls.samples.size() == 1 && ls.samples.front().weight == 0) {  // a delta light
-          const LightSample& s = ls.samples.front();
+        if (is_delta(light)) {  // one ray, exact
+          const LightSample s = light_point(light, p, 0, 0);
           ++n.rays;
           ++n.samples;
           if (tracer->occluded(p, s.dir, 0.0, s.distance * (1.0 - 1e-7))) add_scaled(out, closed, -1.0);
           continue;
         }
-        // Extended light: visible part by the light's rule, with the rule's own error on the
-        // whole light (closed - full) spread in proportion to the visible weight, so that all
-        // visible gives the closed form and all hidden gives 0, exactly.
-        ShL2 visible, full;
-        double w_visible = 0, w_total = 0;
-        for (const LightSample& s : ls.samples) {
-          if (s.weight == 0) continue;
-          ++n.rays;
-          ++n.samples;
-          const bool hidden = tracer->occluded(p, s.dir, 0.0, s.distance * (1.0 - 1e-7));
-          const Rgb w = {s.weight * ls.radiance[0], s.weight * ls.radiance[1], s.weight * ls.radiance[2]};
-          add_basis(full, s.dir, w);
-          w_total += s.weight;
-          if (!hidden) {
-            add_basis(visible, s.dir, w);
-            w_visible += s.weight;
-          }
-        }
-        if (w_visible == w_total) continue;
-        if (w_visible == 0) {
-          add_scaled(out, closed, -1.0);
-          continue;
-        }
-        add_scaled(out, visible, 1.0);
-        add_scaled(out, closed, w_visible / w_total - 1.0);
-        add_scaled(out, full, -w_visible / w_total);
+        ShadowedLight sl;
+        sl.light = l;
+        sl.closed = closed;
+        sl.radiance = light_radiance(light);
+        for (int b = 0; b < kBatches; ++b) sl.points[b] = sobol(Effect::Shadows, k, l, b);
+        extended.push_back(std::move(sl));
+      }
+      if (!extended.empty()) {
+        ShadowState state{*this, p, extended, n};
+        const Estimate est = run_batches(plan(scene.settings.shadow_samples), denominator(k), state);
+        add_scaled(out, est.value, 1.0);
+        record(k, Effect::Shadows, est, n);
       }
       commit(k, Effect::Shadows, out);
     }, cost);
   }
 
-  // sky_occlusion: the environment's radiance in the directions that hit geometry, removed
-  // (with the same exact ends as shadows: nothing hidden gives 0, everything hidden -env).
-  void sky_occlusion(EffectCost& cost) {
-    const SphereStrata strata(scene.settings.sky_samples);
-    run_pass(scene.probes.size(), threads, "sky_occlusion", options, [&](std::size_t k, Counters& n) {
-      const Vec3d p = probe_at(k);
-      Rng rng = stream(seed(), static_cast<std::uint64_t>(Effect::SkyOcclusion), k, 0);
-      ShL2 hidden, full;
-      int hidden_count = 0;
-      for (int j = 0; j < strata.count(); ++j) {
-        const Vec3d w = strata.direction(j, rng);
-        const Rgb l = environment.radiance(w);
-        const Rgb wl = {strata.weight() * l[0], strata.weight() * l[1], strata.weight() * l[2]};
-        ++n.rays;
-        ++n.samples;
-        add_basis(full, w, wl);
-        if (tracer->occluded(p, w, 0.0)) {
-          add_basis(hidden, w, wl);
-          ++hidden_count;
-        }
+  // One probe of an effect over directions from two strategies (sky_occlusion, emission): each
+  // batch's two point sets, then its samples, recorded and committed.
+  template <class State>
+  void sample_directions(Effect e, std::size_t k, int fixed, State& state, Counters& n) {
+    for (int b = 0; b < kBatches; ++b) {
+      state.uniform[b] = sobol(e, k, 0, b, 0);
+      state.guided[b] = sobol(e, k, 0, b, 1);
+    }
+    const Estimate est = run_batches(plan(fixed), denominator(k), state);
+    record(k, e, est, n);
+    commit(k, e, est.value);
+  }
+
+  // sky_occlusion: the environment hidden by geometry, removed. Directions come from two
+  // strategies, uniform on the sphere and by the environment's brightness, combined by the
+  // power heuristic (sampling.h): sample x of strategy s adds f(x) p_s / (m (p_u^2 + p_e^2)).
+  // The hidden part H and the whole F are estimated from the same directions, and the rule's
+  // error on the whole (env - F) is spread by the hidden share h of their weight: out =
+  // -H - h (env - F), so nothing hidden gives 0 and everything hidden -env, exactly.
+  struct SkyState {
+    const Engine& engine;
+    Vec3d p;
+    Counters& n;
+    std::array<SobolSet, kBatches> uniform, guided;
+    std::array<ShL2, kBatches> hidden{}, full{};
+    std::array<double, kBatches> w_hidden{}, w_total{};
+    void add(int b, const Vec3d& w, double inv_pdf) {
+      const Rgb l = engine.environment.radiance(w);
+      const Rgb wl = {inv_pdf * l[0], inv_pdf * l[1], inv_pdf * l[2]};
+      const double weight = (wl[0] + wl[1] + wl[2]) / 3.0;
+      ++n.rays;
+      add_basis(full[b], w, wl);
+      w_total[b] += weight;
+      if (engine.tracer->occluded(p, w, 0.0)) {
+        add_basis(hidden[b], w, wl);
+        w_hidden[b] += weight;
       }
+    }
+    void extend(int b, std::uint32_t from, std::uint32_t to) {
+      const DirectionDistribution& sky = engine.guide();
+      for (std::uint32_t i = from; i < to; ++i) {
+        const auto [u1, u2] = uniform[b].point(i);
+        const Vec3d w = uniform_sphere(u1, u2);
+        add(b, w, mis_factor(kUniformPdf, sky.pdf(w)));
+        if (sky.empty()) continue;
+        const auto [v1, v2] = guided[b].point(i);
+        const DirectionSample s = sky.sample(v1, v2);
+        add(b, s.dir, mis_factor(s.pdf, kUniformPdf));
+      }
+    }
+    ShL2 value(int b, std::uint32_t m) const {
       ShL2 out;
-      if (hidden_count == strata.count()) {
-        add_scaled(out, environment.sh(), -1.0);
-      } else if (hidden_count > 0) {
-        const double fraction = static_cast<double>(hidden_count) / strata.count();
-        add_scaled(out, hidden, -1.0);
-        add_scaled(out, environment.sh(), -fraction);
-        add_scaled(out, full, fraction);
+      if (w_hidden[b] == 0 || w_total[b] == 0) return out;
+      if (w_hidden[b] == w_total[b] && hidden[b] == full[b]) {
+        add_scaled(out, engine.environment.sh(), -1.0);
+        return out;
       }
-      commit(k, Effect::SkyOcclusion, out);
+      const double h = w_hidden[b] / w_total[b];
+      add_scaled(out, hidden[b], -1.0 / m);
+      add_scaled(out, engine.environment.sh(), -h);
+      add_scaled(out, full[b], h / m);
+      return out;
+    }
+  };
+  void sky_occlusion(EffectCost& cost) {
+    run_pass(scene.probes.size(), threads, "sky_occlusion", options, [&](std::size_t k, Counters& n) {
+      SkyState state{*this, probe_at(k), n, {}, {}};
+      sample_directions(Effect::SkyOcclusion, k, scene.settings.sky_samples, state, n);
     }, cost);
   }
 
-  // emission: emissive geometry seen from the probe; it hides the environment behind it
-  // unless sky_occlusion has already removed that.
+  // emission: emissive geometry seen from the probe, by uniform directions and by points of
+  // the emitters (emitters.h), combined by the power heuristic; an emitter hides the
+  // environment behind it unless sky_occlusion has already removed that.
+  struct EmissionState {
+    const Engine& engine;
+    Vec3d p;
+    Counters& n;
+    bool hides_sky;
+    std::array<SobolSet, kBatches> uniform, guided;
+    std::array<ShL2, kBatches> sum{};
+    void add(int b, const Vec3d& w, std::uint32_t shape, double inv_pdf) {
+      Rgb value = engine.scene.geometry[shape].emission;
+      if (hides_sky) {
+        const Rgb sky = engine.environment.radiance(w);
+        for (int c = 0; c < 3; ++c) value[c] -= sky[c];
+      }
+      add_basis(sum[b], w, {inv_pdf * value[0], inv_pdf * value[1], inv_pdf * value[2]});
+    }
+    void extend(int b, std::uint32_t from, std::uint32_t to) {
+      const EmitterSampler& emitters = *engine.emitters;
+      for (std::uint32_t i = from; i < to; ++i) {
+        const auto [u1, u2] = uniform[b].point(i);
+        const Vec3d w = uniform_sphere(u1, u2);
+        ++n.rays;
+        const Hit hit = engine.tracer->intersect(p, w, 0.0);
+        if (hit.hit && !is_black(engine.scene.geometry[hit.shape].emission))
+          add(b, w, hit.shape, mis_factor(kUniformPdf, emitters.pdf(p, w, hit)));
+        if (emitters.empty()) continue;
+        const auto [v1, v2] = guided[b].point(i);
+        const EmitterSample s = emitters.sample(p, v1, v2);
+        if (!(s.pdf > 0)) continue;
+        ++n.rays;
+        if (!engine.tracer->occluded(p, s.dir, 0.0, s.distance - engine.offset_at(p + s.distance * s.dir)))
+          add(b, s.dir, s.shape, mis_factor(s.pdf, kUniformPdf));
+      }
+    }
+    ShL2 value(int b, std::uint32_t m) const { return scaled(sum[b], 1.0 / m); }
+  };
   void emission(EffectCost& cost) {
-    const SphereStrata strata(scene.settings.sky_samples);
     const bool hides_sky = scene.effects.environment && !scene.effects.sky_occlusion;
     run_pass(scene.probes.size(), threads, "emission", options, [&](std::size_t k, Counters& n) {
-      const Vec3d p = probe_at(k);
-      Rng rng = stream(seed(), static_cast<std::uint64_t>(Effect::Emission), k, 0);
-      ShL2 out;
-      for (int j = 0; j < strata.count(); ++j) {
-        const Vec3d w = strata.direction(j, rng);
-        ++n.rays;
-        ++n.samples;
-        const Hit hit = tracer->intersect(p, w, 0.0);
-        if (!hit.hit) continue;
-        const Rgb& le = scene.geometry[hit.shape].emission;
-        if (is_black(le)) continue;
-        Rgb value = le;
-        if (hides_sky) {
-          const Rgb sky = environment.radiance(w);
-          for (int c = 0; c < 3; ++c) value[c] -= sky[c];
-        }
-        add_basis(out, w, {strata.weight() * value[0], strata.weight() * value[1], strata.weight() * value[2]});
-      }
-      commit(k, Effect::Emission, out);
+      EmissionState state{*this, probe_at(k), n, hides_sky, {}, {}};
+      sample_directions(Effect::Emission, k, scene.settings.sky_samples, state, n);
     }, cost);
   }
 
-  // bounce:N: light reflected 1..N times by the geometry's diffuse albedo (bake.h).
-  void bounce(EffectCost& cost) {
-    const SphereStrata strata(scene.settings.bounce_samples);
-    const int depth = scene.effects.bounces;
-    run_pass(scene.probes.size(), threads, "bounce", options, [&](std::size_t k, Counters& n) {
-      const Vec3d p = probe_at(k);
-      Rng rng = stream(seed(), static_cast<std::uint64_t>(Effect::Bounce), k, 0);
-      ShL2 out;
-      for (int j = 0; j < strata.count(); ++j) {
-        const Vec3d w0 = strata.direction(j, rng);
-        ++n.samples;
-        ++n.rays;
-        Hit hit = tracer->intersect(p, w0, 0.0);
-        if (!hit.hit) continue;
-        Vec3d x = p + hit.t * w0;
-        Rgb beta{1, 1, 1}, radiance{0, 0, 0};
-        for (int b = 1; b <= depth; ++b) {
-          const Rgb& albedo = scene.geometry[hit.shape].albedo;
-          for (int c = 0; c < 3; ++c) beta[c] *= albedo[c];
-          if (is_black(beta)) break;
-          const Vec3d normal = hit.normal;
-          const double eps = epsilon * (1.0 + std::max({std::fabs(x.x), std::fabs(x.y), std::fabs(x.z)}));
-          // Next-event estimation: (albedo / pi) E_light(x), albedo already in beta.
-          if (scene.effects.direct)
-            for (const scene::SceneLight& light : scene.lights) {
-              const Rgb e = light_irradiance(light, x, normal, eps, *tracer, rng, n.rays);
-              for (int c = 0; c < 3; ++c) radiance[c] += beta[c] * e[c] / std::numbers::pi;
-            }
-          // Continue: cosine-weighted, so the estimator of (albedo / pi) int L cos is albedo L.
-          const Vec3d w = cosine_direction(normal, rng);
-          ++n.rays;
-          hit = tracer->intersect(x, w, eps);
-          if (!hit.hit) {
-            Rgb far{0, 0, 0};
-            if (scene.effects.environment) far = environment.radiance(w);
-            if (scene.effects.direct)
-              for (const scene::SceneLight& light : scene.lights)
-                if (is_distant(light)) {
-                  const Rgb d = distant_radiance(light, w);
-                  for (int c = 0; c < 3; ++c) far[c] += d[c];
-                }
-            for (int c = 0; c < 3; ++c) radiance[c] += beta[c] * far[c];
-            break;
-          }
-          if (scene.effects.emission) {
-            const Rgb& le = scene.geometry[hit.shape].emission;
-            for (int c = 0; c < 3; ++c) radiance[c] += beta[c] * le[c];
-          }
-          x = x + hit.t * w;
-        }
-        const double wt = strata.weight();
-        add_basis(out, w0, {wt * radiance[0], wt * radiance[1], wt * radiance[2]});
+  // The light a surface point x (unit normal n facing the path) sends back along a path of
+  // throughput beta (albedo already in it), by next-event estimation: every light (one
+  // sample and a shadow ray each), an emitter point and an environment direction, the last
+  // two weighed against the cosine-sampled continuation by the power heuristic.
+  void next_events(const Vec3d& x, const Vec3d& normal, double eps, const Rgb& beta, PathPoints& points, Rgb& radiance,
+                   Counters& n) const {
+    const auto add = [&](const Rgb& l, double scale) {
+      for (int c = 0; c < 3; ++c) radiance[c] += beta[c] * l[c] * scale;
+    };
+    if (scene.effects.direct)
+      for (const scene::SceneLight& light : scene.lights) {
+        const auto [u1, u2] = points.next();
+        add(light_irradiance(light, x, normal, eps, *tracer, u1, u2, n.rays), 1.0 / std::numbers::pi);
       }
-      commit(k, Effect::Bounce, out);
+    if (scene.effects.emission && !emitters->empty()) {
+      const auto [u1, u2] = points.next();
+      const EmitterSample s = emitters->sample(x, u1, u2);
+      const double cos = dot(normal, s.dir);
+      if (s.pdf > 0 && cos > 0) {
+        ++n.rays;
+        if (!tracer->occluded(x, s.dir, eps, s.distance - offset_at(x + s.distance * s.dir)))
+          add(scene.geometry[s.shape].emission, cos / std::numbers::pi * mis_factor(s.pdf, cos / std::numbers::pi));
+      }
+    }
+    const DirectionDistribution& sky = guide();
+    if (scene.effects.environment && !sky.empty()) {
+      const auto [u1, u2] = points.next();
+      const DirectionSample s = sky.sample(u1, u2);
+      const double cos = dot(normal, s.dir);
+      if (cos > 0) {
+        ++n.rays;
+        if (!tracer->occluded(x, s.dir, eps))
+          add(environment.radiance(s.dir), cos / std::numbers::pi * mis_factor(s.pdf, cos / std::numbers::pi));
+      }
+    }
+  }
+
+  // What a path that left x along w (cosine-sampled, p_c = cos / pi) finds: the environment
+  // and distant lights where it escapes, emission where it hits (both weighed against next
+  // events as above). Returns the hit, to continue from.
+  Hit continue_path(const Vec3d& x, const Vec3d& w, double p_c, double eps, const Rgb& beta, Rgb& radiance,
+                    Counters& n) const {
+    ++n.rays;
+    const Hit hit = tracer->intersect(x, w, eps);
+    Rgb found{0, 0, 0};
+    if (!hit.hit) {
+      if (scene.effects.environment) {
+        const DirectionDistribution& sky = guide();
+        const Rgb l = environment.radiance(w);
+        const double weight = mis_weight(p_c, sky.pdf(w));
+        for (int c = 0; c < 3; ++c) found[c] += weight * l[c];
+      }
+      if (scene.effects.direct)
+        for (const scene::SceneLight& light : scene.lights)
+          if (is_distant(light)) {
+            const Rgb d = distant_radiance(light, w);
+            for (int c = 0; c < 3; ++c) found[c] += d[c];
+          }
+    } else if (scene.effects.emission) {
+      const Rgb& le = scene.geometry[hit.shape].emission;
+      if (!is_black(le)) {
+        const double weight = mis_weight(p_c, emitters->pdf(x, w, hit));
+        for (int c = 0; c < 3; ++c) found[c] += weight * le[c];
+      }
+    }
+    for (int c = 0; c < 3; ++c) radiance[c] += beta[c] * found[c];
+    return hit;
+  }
+
+  // One path from the probe along w0: the light reflected 1..depth times.
+  Rgb path(const Vec3d& p, const Vec3d& w0, PathPoints& points, Counters& n) const {
+    Rgb beta{1, 1, 1}, radiance{0, 0, 0};
+    ++n.rays;
+    Hit hit = tracer->intersect(p, w0, 0.0);
+    Vec3d x = p + hit.t * w0;
+    for (int b = 1; b <= scene.effects.bounces && hit.hit; ++b) {
+      const Rgb& albedo = scene.geometry[hit.shape].albedo;
+      for (int c = 0; c < 3; ++c) beta[c] *= albedo[c];
+      if (is_black(beta)) break;
+      const Vec3d normal = hit.normal;
+      const double eps = offset_at(x);
+      next_events(x, normal, eps, beta, points, radiance, n);
+      // Continue: cosine-weighted, so the estimator of (albedo / pi) int L cos is albedo L.
+      const auto [u1, u2] = points.next();
+      const Vec3d w = cosine_direction(normal, u1, u2);
+      hit = continue_path(x, w, std::fmax(0.0, dot(normal, w)) / std::numbers::pi, eps, beta, radiance, n);
+      x = x + hit.t * w;
+    }
+    return radiance;
+  }
+
+  // bounce:N: light reflected 1..N times by the geometry's diffuse albedo (bake.h); the first
+  // directions are uniform on the sphere and every later pair of numbers a padding pair (sobol.h).
+  struct BounceState {
+    const Engine& engine;
+    Vec3d p;
+    Counters& n;
+    std::array<SobolSet, kBatches> first;
+    std::array<std::uint64_t, kBatches> padding{};  // keys of each batch's PathPoints
+    std::array<ShL2, kBatches> sum{};
+    void extend(int b, std::uint32_t from, std::uint32_t to) {
+      for (std::uint32_t i = from; i < to; ++i) {
+        const auto [u1, u2] = first[b].point(i);
+        const Vec3d w0 = uniform_sphere(u1, u2);
+        PathPoints points(padding[b], i);
+        const Rgb l = engine.path(p, w0, points, n);
+        add_basis(sum[b], w0, {l[0] / kUniformPdf, l[1] / kUniformPdf, l[2] / kUniformPdf});
+      }
+    }
+    ShL2 value(int b, std::uint32_t m) const { return scaled(sum[b], 1.0 / m); }
+  };
+  void bounce(EffectCost& cost) {
+    run_pass(scene.probes.size(), threads, "bounce", options, [&](std::size_t k, Counters& n) {
+      BounceState state{*this, probe_at(k), n, {}};
+      for (int b = 0; b < kBatches; ++b) {
+        state.first[b] = sobol(Effect::Bounce, k, 0, b);
+        const std::size_t key = 1000 + static_cast<std::size_t>(b);  // apart from sobol()'s keys
+        state.padding[b] = stream(seed(), static_cast<std::uint64_t>(Effect::Bounce), k, key).bits();
+      }
+      const Estimate est = run_batches(plan(scene.settings.bounce_samples), denominator(k), state);
+      record(k, Effect::Bounce, est, n);
+      commit(k, Effect::Bounce, est.value);
     }, cost);
   }
 
@@ -331,6 +536,8 @@ struct Engine {
     const auto start = Clock::now();
     tracer = std::make_unique<Tracer>(scene.geometry);
     if (!tracer->ok()) return IoStatus::error(IoErrc::Core, scene.file, tracer->error());
+    static const std::vector<scene::SceneShape> no_emitters;
+    emitters = std::make_unique<EmitterSampler>(options.next_events ? scene.geometry : no_emitters);
     for (const scene::SceneShape& shape : scene.geometry) {
       bounds.push_back(shape_bounds(shape));
       if (shape.type == scene::ShapeType::Sphere)
@@ -343,6 +550,20 @@ struct Engine {
     return IoStatus::success();
   }
 };
+
+// Each probe's error estimate in % of its own mean E/pi, per effect and all effects together
+// (independent: combined in quadrature, error_estimate.h).
+void measure_errors(BakeResult& result) {
+  result.error_estimate_pct.assign(result.radiance.size(), 0.0);
+  for (std::size_t k = 0; k < result.radiance.size(); ++k) {
+    ChannelError all{};
+    for (EffectSampling& s : result.sampling[k]) {
+      s.error_pct = error_pct(s.error, result.radiance[k]);
+      all = combine_errors(all, s.error);
+    }
+    result.error_estimate_pct[k] = error_pct(all, result.radiance[k]);
+  }
+}
 
 }  // namespace
 
@@ -361,10 +582,32 @@ const char* effect_name(Effect effect) noexcept {
 IoStatus bake(const scene::Scene& scene, const BakeOptions& options, BakeResult& out) {
   try {
     const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-    Engine engine(scene, options, threads);
-    engine.total.assign(scene.probes.size(), ShL2{});
-    if (options.keep_effects) engine.parts.assign(scene.probes.size(), {});
     BakeResult result;
+    // Probe validity (probe_validity.h) first: it needs the ray tracer whenever the scene has
+    // geometry, even if no effect traces rays, and "offset" moves probes before any pass (the
+    // passes then bake a copy of the scene holding the moved probes, with its own tracer).
+    Engine first(scene, options, threads);
+    result.validity.assign(scene.probes.size(), ProbeValidity{});
+    if (!scene.geometry.empty()) {
+      if (IoStatus st = first.build_tracer(result.geometry); !st.ok()) return st;
+      run_pass(scene.probes.size(), threads, "validity", options, [&](std::size_t k, Counters& n) {
+        result.validity[k] = check_probe(*first.tracer, scene, k, n.rays);
+        ++n.samples;
+      }, result.validity_cost);
+    }
+    if (IoStatus st = check_invalid_probes(scene, result.validity); !st.ok()) return st;
+    const std::optional<scene::Scene> moved = offset_scene(scene, result.validity);
+    std::optional<Engine> second;
+    if (moved) {
+      first.tracer.reset();
+      second.emplace(*moved, options, threads);
+      result.geometry = {};
+      if (IoStatus st = second->build_tracer(result.geometry); !st.ok()) return st;
+    }
+    Engine& engine = second ? *second : first;
+    engine.total.assign(scene.probes.size(), ShL2{});
+    engine.sampling.assign(scene.probes.size(), {});
+    if (options.keep_effects) engine.parts.assign(scene.probes.size(), {});
     auto& costs = result.costs;
     const auto cost = [&](Effect e) -> EffectCost& { return costs[static_cast<std::size_t>(e)]; };
     const scene::SceneEffects& fx = scene.effects;
@@ -379,11 +622,21 @@ IoStatus bake(const scene::Scene& scene, const BakeOptions& options, BakeResult&
     }
     const bool traces = fx.shadows || fx.sky_occlusion || fx.emission || fx.bounces > 0;
     if (traces && !scene.geometry.empty()) {
-      if (IoStatus st = engine.build_tracer(result.geometry); !st.ok()) return st;
-      if (fx.shadows) engine.shadows(cost(Effect::Shadows));
-      if (fx.sky_occlusion) engine.sky_occlusion(cost(Effect::SkyOcclusion));
-      if (fx.emission) engine.emission(cost(Effect::Emission));
-      if (fx.bounces > 0) engine.bounce(cost(Effect::Bounce));
+      if (!engine.tracer)  // built above for probe validity
+        if (IoStatus st = engine.build_tracer(result.geometry); !st.ok()) return st;
+      const auto sample_effects = [&] {
+        if (fx.shadows) engine.shadows(cost(Effect::Shadows));
+        if (fx.sky_occlusion) engine.sky_occlusion(cost(Effect::SkyOcclusion));
+        if (fx.emission) engine.emission(cost(Effect::Emission));
+        if (fx.bounces > 0) engine.bounce(cost(Effect::Bounce));
+      };
+      if (scene.settings.target_error_pct > 0) {  // the pilot (Engine::kPilotSamples)
+        engine.pilot = engine.total;
+        engine.piloting = true;
+        sample_effects();
+        engine.piloting = false;
+      }
+      sample_effects();
     } else {
       // No geometry: nothing to hide, emit or reflect; the effects cost nothing.
       cost(Effect::Shadows).enabled = fx.shadows;
@@ -392,7 +645,11 @@ IoStatus bake(const scene::Scene& scene, const BakeOptions& options, BakeResult&
       cost(Effect::Bounce).enabled = fx.bounces > 0;
     }
     result.radiance = std::move(engine.total);
+    result.sampling = std::move(engine.sampling);
     result.effects = std::move(engine.parts);
+    dilate_invalid_probes(scene, result.validity, result.radiance, result.effects, result.sampling);
+    measure_errors(result);
+    result.validity_counts = count_validity(result.validity);
     out = std::move(result);
     return IoStatus::success();
   } catch (const std::exception& e) {

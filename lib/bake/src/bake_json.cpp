@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "shpack/io/sh_record_json.h"
@@ -17,6 +18,69 @@ using Json = nlohmann::ordered_json;
 std::string array_items(const Json& array) {
   const std::string text = array.dump();
   return text.substr(1, text.size() - 2);
+}
+
+// Probe validity (docs/scenes.md, "Probe validity"): whether the probe is inside geometry, and
+// what it got instead.
+void put_validity(const scene::Scene& scene, const ProbeValidity& v, Json& diagnostics) {
+  diagnostics["valid"] = v.valid;
+  diagnostics["backface_fraction"] = v.backface_fraction;
+  if (!v.valid && v.backface_shape) diagnostics["inside"] = scene.geometry[*v.backface_shape].label;
+  if (v.offset_position) {
+    diagnostics["offset_position"] = {v.offset_position->x, v.offset_position->y, v.offset_position->z};
+    diagnostics["offset_backface_fraction"] = v.offset_backface_fraction;
+  }
+  diagnostics["dilated"] = v.dilated;
+}
+
+// The Monte Carlo effects' sampling of one probe (bake.h, EffectSampling): the estimated
+// error of everything together and, per effect, the samples taken and the error.
+void put_sampling(const BakeResult& result, std::size_t k, Json& diagnostics) {
+  if (k >= result.error_estimate_pct.size()) return;
+  diagnostics["error_estimate_pct"] = result.error_estimate_pct[k];
+  Json samples = Json::object(), errors = Json::object(), capped = Json::array();
+  for (std::size_t e = 0; e < kEffectCount; ++e) {
+    if (!result.costs[e].enabled) continue;
+    const EffectSampling& s = result.sampling[k][e];
+    if (s.samples == 0) continue;
+    const char* name = effect_name(static_cast<Effect>(e));
+    samples[name] = s.samples;
+    errors[name] = s.error_pct;
+    if (s.capped) capped.push_back(name);
+  }
+  diagnostics["effect_error_pct"] = std::move(errors);
+  diagnostics["samples"] = std::move(samples);
+  diagnostics["capped"] = std::move(capped);
+}
+
+// Per effect over the probes: the largest error estimate, the samples' range, the capped count.
+void put_effect_sampling(const BakeResult& result, std::size_t e, Json& effect) {
+  double worst = 0;
+  std::uint64_t least = 0, most = 0, capped = 0;
+  bool any = false;
+  for (const auto& probe : result.sampling) {
+    const EffectSampling& s = probe[e];
+    if (s.samples == 0) continue;
+    worst = std::max(worst, s.error_pct);
+    least = any ? std::min(least, s.samples) : s.samples;
+    most = std::max(most, s.samples);
+    capped += s.capped ? 1 : 0;
+    any = true;
+  }
+  if (!any) return;
+  effect["error_estimate_pct_max"] = worst;
+  effect["samples_per_probe"] = {least, most};
+  effect["capped_probes"] = capped;
+}
+
+const char* policy_name(scene::InvalidProbes policy) {
+  switch (policy) {
+    case scene::InvalidProbes::Dilate: return "dilate";
+    case scene::InvalidProbes::Keep: return "keep";
+    case scene::InvalidProbes::Error: return "error";
+    case scene::InvalidProbes::Offset: return "offset";
+  }
+  return "dilate";
 }
 
 }  // namespace
@@ -55,6 +119,8 @@ io::IoStatus bake_to_json(const scene::Scene& scene, const BakeResult& result, c
       io::put_sh_values(sh, probe);
       Json diagnostics = Json::object();
       io::put_sh_diagnostics(sh, diagnostics);
+      if (k < result.validity.size()) put_validity(scene, result.validity[k], diagnostics);
+      put_sampling(result, k, diagnostics);
       probe["diagnostics"] = std::move(diagnostics);
       probes.append(separator).append("\n    ").append(probe.dump(-1, ' ', false, Json::error_handler_t::replace));
     }
@@ -71,18 +137,25 @@ io::IoStatus bake_to_json(const scene::Scene& scene, const BakeResult& result, c
                   {"shapes", scene.geometry.size()}, {"seed", scene.settings.seed}};
     j["frame"] = "unity: left-handed, +Y up, +Z forward";
     j["options"] = {{"window", window_name(options.window).text}};
+    j["sampling"] = {{"target_error_pct", scene.settings.target_error_pct}, {"max_samples", scene.settings.max_samples}};
     j["probes"] = nullptr;  // replaced by the probes' text below
     Json effects = Json::object();
     for (std::size_t e = 0; e < kEffectCount; ++e) {
       const EffectCost& c = result.costs[e];
       if (!c.enabled) continue;
-      effects[effect_name(static_cast<Effect>(e))] = {{"time_ms", c.time_ms}, {"cpu_ms", c.cpu_ms},
-                                                      {"rays", c.rays},       {"samples", c.samples},
-                                                      {"analytic", c.analytic}};
+      Json effect = {{"time_ms", c.time_ms}, {"cpu_ms", c.cpu_ms}, {"rays", c.rays},
+                     {"samples", c.samples}, {"analytic", c.analytic}};
+      put_effect_sampling(result, e, effect);
+      effects[effect_name(static_cast<Effect>(e))] = std::move(effect);
     }
     j["effects"] = std::move(effects);
     j["geometry"] = {{"built", result.geometry.built}, {"time_ms", result.geometry.time_ms},
                      {"triangles", result.geometry.triangles}, {"spheres", result.geometry.spheres}};
+    const ValidityCounts& vc = result.validity_counts;
+    j["validity"] = {{"measured", result.validity_cost.enabled}, {"threshold", scene.settings.validity_threshold},
+                     {"invalid_probes", policy_name(scene.settings.invalid_probes)}, {"invalid", vc.invalid},
+                     {"moved", vc.moved}, {"dilated", vc.dilated}, {"time_ms", result.validity_cost.time_ms},
+                     {"rays", result.validity_cost.rays}};
     // One probe per line inside the indented document. The only top-level "probes": null is
     // the placeholder ("scene" holds "probes" too, as a number).
     json = j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";

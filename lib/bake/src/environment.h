@@ -7,6 +7,7 @@
 #include "shpack/io/image_file.h"
 #include "shpack/io/io_status.h"
 #include "shpack/rotate.h"
+#include "direction_distribution.h"
 #include "shpack/scene/scene.h"
 #include "tracer.h"
 
@@ -26,11 +27,18 @@ class EnvironmentSource {
   // contains d (the map is piecewise constant, as its projection takes it), or the gradient.
   Rgb radiance(const Vec3d& d) const noexcept;
 
+  // Directions drawn by brightness (direction_distribution.h), for next-event estimation
+  // toward the environment; built by load() with `need_lookup`. Empty for no environment.
+  const DirectionDistribution& distribution() const noexcept { return distribution_; }
+
  private:
+  void build_distribution();
+
   scene::SceneEnvironment env_;
   ShL2 sh_;
   io::ImageFile image_;
   Matrix3 rotation_{};  // R_y of the map's rotation; radiance(d) reads the map at R^T d
+  DirectionDistribution distribution_;
 };
 
 }  // namespace shpack::bake

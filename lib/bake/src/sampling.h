@@ -20,17 +20,19 @@ namespace shpack::bake {
 // bijective mix; passes BigCrush, and cheap to key per probe.
 class Rng {
  public:
+  Rng() noexcept : Rng(0) {}
   explicit Rng(std::uint64_t key) noexcept : state_(mix(key)) {}
   static std::uint64_t mix(std::uint64_t z) noexcept {
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     return z ^ (z >> 31);
   }
-  // Uniform in [0, 1), 53 random bits.
-  double uniform() noexcept {
+  std::uint64_t bits() noexcept {
     state_ += 0x9E3779B97F4A7C15ull;
-    return static_cast<double>(mix(state_) >> 11) * 0x1p-53;
+    return mix(state_);
   }
+  // Uniform in [0, 1), 53 random bits.
+  double uniform() noexcept { return static_cast<double>(bits() >> 11) * 0x1p-53; }
 
  private:
   std::uint64_t state_;
@@ -56,29 +58,30 @@ inline void basis_of(Vec3d n, Vec3d& e1, Vec3d& e2) noexcept {
   e2 = {b, sign + n.y * n.y * a, -n.y};
 }
 
-// Strata of the sphere: rows of equal height in y (equal area, Archimedes) times columns
-// of equal azimuth; count = rows * columns >= wanted. One jittered direction per stratum,
-// each of weight 4 pi / count.
-struct SphereStrata {
-  int rows = 1, columns = 1;
-  explicit SphereStrata(int wanted) noexcept {
-    rows = std::max(1, static_cast<int>(std::lround(std::sqrt(wanted / 2.0))));
-    columns = std::max(1, (wanted + rows - 1) / rows);
-  }
-  int count() const noexcept { return rows * columns; }
-  double weight() const noexcept { return 4.0 * std::numbers::pi / count(); }
-  Vec3d direction(int k, Rng& rng) const noexcept {
-    const int row = k / columns, column = k % columns;
-    const double y = -1.0 + 2.0 * (row + rng.uniform()) / rows;
-    const double phi = 2.0 * std::numbers::pi * (column + rng.uniform()) / columns;
-    const double s = std::sqrt(std::fmax(0.0, (1.0 - y) * (1.0 + y)));
-    return {s * std::cos(phi), y, s * std::sin(phi)};
-  }
-};
+// The point (u1, u2) of [0, 1)^2 as a direction uniform on the sphere: y = 1 - 2 u1 (equal
+// areas in y, Archimedes), phi = 2 pi u2; density kUniformPdf = 1 / (4 pi).
+inline constexpr double kUniformPdf = 0.25 / std::numbers::pi;
+inline Vec3d uniform_sphere(double u1, double u2) noexcept {
+  const double y = 1.0 - 2.0 * u1, phi = 2.0 * std::numbers::pi * u2;
+  const double s = std::sqrt(std::fmax(0.0, (1.0 - y) * (1.0 + y)));
+  return {s * std::cos(phi), y, s * std::sin(phi)};
+}
+
+// Multiple importance sampling of two strategies, one sample from each, by the power
+// heuristic (exponent 2; Veach and Guibas, SIGGRAPH 1995): the sample drawn with density
+// p_own, where the other strategy has density p_other, weighs w = p_own^2 / (p_own^2 +
+// p_other^2). It keeps a rare sample of the broad strategy (a uniform direction that happens
+// to hit a small emitter) from adding variance that the narrow one has already removed.
+inline double mis_weight(double p_own, double p_other) noexcept {
+  return p_own > 0 ? p_own * p_own / (p_own * p_own + p_other * p_other) : 0.0;
+}
+// w / p_own: what the sample's integrand value is multiplied by.
+inline double mis_factor(double p_own, double p_other) noexcept {
+  return p_own > 0 ? p_own / (p_own * p_own + p_other * p_other) : 0.0;
+}
 
 // A cosine-weighted direction about the unit normal n (Malley's method): pdf cos / pi.
-inline Vec3d cosine_direction(Vec3d n, Rng& rng) noexcept {
-  const double u1 = rng.uniform(), u2 = rng.uniform();
+inline Vec3d cosine_direction(Vec3d n, double u1, double u2) noexcept {
   const double r = std::sqrt(u1), phi = 2.0 * std::numbers::pi * u2;
   Vec3d e1, e2;
   basis_of(n, e1, e2);

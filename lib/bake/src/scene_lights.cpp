@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <numbers>
 
@@ -57,35 +56,21 @@ Rgb extended_radiance(const scene::SceneLight& light) noexcept {
   return out;
 }
 
-bool is_delta(const scene::SceneLight& light) noexcept {
-  return light.type == LightType::Point || light.type == LightType::Spot ||
-         (light.type == LightType::Directional && light.angular_diameter == 0) ||
-         (light.type == LightType::Sphere && light.radius == 0);
-}
-
-// Cap about unit d with 1 - cos a = one_minus_cos: n_u strata in u = cos theta', each with the
-// 2-point Gauss rule, times n_phi equally spaced azimuths with a random offset: exact for
-// every polynomial of degree <= 2 in the direction over each stratum (bake.h).
-void sample_cap(Vec3d d, double one_minus_cos, int wanted, Rng& rng, std::vector<LightSample>& out,
-                const std::function<double(Vec3d)>& distance) {
-  const int n_u = std::max(1, static_cast<int>(std::ceil(std::sqrt(wanted / 2.0))));
-  const int n_phi = std::max(3, (wanted + 2 * n_u - 1) / (2 * n_u));
-  Vec3d e1, e2;
-  basis_of(d, e1, e2);
-  const double offset = rng.uniform();
-  const double g = 0.5 / std::sqrt(3.0);  // Gauss nodes at 1/2 -+ g of each stratum
-  for (int k = 0; k < n_u; ++k) {
-    for (const double node : {0.5 - g, 0.5 + g}) {
-      // v = 1 - u, measured from the pole, so sin theta' = sqrt(v (2 - v)) keeps its digits.
-      const double v = one_minus_cos * (k + node) / n_u;
-      const double s = std::sqrt(v * (2.0 - v)), u = 1.0 - v;
-      for (int j = 0; j < n_phi; ++j) {
-        const double phi = 2.0 * kPi * (j + offset) / n_phi;
-        const Vec3d w = u * d + (s * std::cos(phi)) * e1 + (s * std::sin(phi)) * e2;
-        out.push_back({w, distance(w), 0.5 * (one_minus_cos / n_u) * (2.0 * kPi / n_phi)});
-      }
-    }
+// 1 - cos a of the cap a sphere light or a sun subtends from `from` (0 if `from` is inside
+// the sphere), and its axis: 1 - cos a = (R/r)^2 / (1 + cos a) for a sphere, without
+// cancellation; 2 sin^2(a/2) for a sun of angular diameter 2a.
+double cap_of(const scene::SceneLight& light, Vec3d from, Vec3d& axis) noexcept {
+  if (light.type == LightType::Directional) {
+    axis = -1.0 * vec(light.direction);
+    const double s = std::sin(0.25 * light.angular_diameter);
+    return 2.0 * s * s;
   }
+  const Vec3d pc = vec(light.position) - from;
+  const double r = norm(pc);
+  if (r <= light.radius) return 0;
+  axis = (1.0 / r) * pc;
+  const double cos_a = std::sqrt((r - light.radius) * (r + light.radius)) / r;
+  return (light.radius / r) * (light.radius / r) / (1.0 + cos_a);
 }
 
 }  // namespace
@@ -167,39 +152,40 @@ bool can_shadow(const scene::SceneLight& light, Vec3d probe, const Bounds& b) no
   return true;
 }
 
-void sample_light(const scene::SceneLight& light, Vec3d from, int wanted, Rng& rng, LightSamples& out) {
-  out.samples.clear();
-  out.radiance = extended_radiance(light);
+bool is_delta(const scene::SceneLight& light) noexcept {
+  return light.type == LightType::Point || light.type == LightType::Spot ||
+         (light.type == LightType::Directional && light.angular_diameter == 0) ||
+         (light.type == LightType::Sphere && light.radius == 0);
+}
+
+Rgb light_radiance(const scene::SceneLight& light) noexcept { return extended_radiance(light); }
+
+LightSample light_point(const scene::SceneLight& light, Vec3d from, double u1, double u2) noexcept {
   if (is_delta(light)) {
     const bool directional = light.type == LightType::Directional;
     const Vec3d to = directional ? -1.0 * vec(light.direction) : vec(light.position) - from;
     const double dist = directional ? kInf : norm(to);
-    out.samples.push_back({directional ? to : (1.0 / dist) * to, dist, 0.0});
-    return;
+    return {directional ? to : (1.0 / dist) * to, dist, 0.0};
   }
   switch (light.type) {
-    case LightType::Directional: {
-      const double s = std::sin(0.25 * light.angular_diameter);  // 1 - cos a = 2 sin^2(a/2)
-      sample_cap(-1.0 * vec(light.direction), 2.0 * s * s, wanted, rng, out.samples,
-                 [](Vec3d) { return kInf; });
-      return;
-    }
+    case LightType::Directional:
     case LightType::Sphere: {
-      const Vec3d c = vec(light.position), pc = c - from;
-      const double r = norm(pc), radius = light.radius;
-      // 1 - cos a = (R/r)^2 / (1 + cos a), cos a = sqrt((r - R)(r + R)) / r.
-      const double cos_a = std::sqrt((r - radius) * (r + radius)) / r;
-      sample_cap((1.0 / r) * pc, (radius / r) * (radius / r) / (1.0 + cos_a), wanted, rng, out.samples,
-                 [&](Vec3d w) { return sphere_distance(from, w, c, radius); });
-      return;
+      // Uniform in the cap: v = 1 - cos theta' uniform in [0, 1 - cos a], measured from the
+      // pole so that sin theta' = sqrt(v (2 - v)) keeps its digits; weight Omega = 2 pi (1 - cos a).
+      Vec3d axis, e1, e2;
+      const double one_minus_cos = cap_of(light, from, axis);
+      if (one_minus_cos == 0) return {};
+      basis_of(axis, e1, e2);
+      const double v = one_minus_cos * u1, s = std::sqrt(v * (2.0 - v)), phi = 2.0 * kPi * u2;
+      const Vec3d w = (1.0 - v) * axis + (s * std::cos(phi)) * e1 + (s * std::sin(phi)) * e2;
+      const double dist =
+          light.type == LightType::Sphere ? sphere_distance(from, w, vec(light.position), light.radius) : kInf;
+      return {w, dist, 2.0 * kPi * one_minus_cos};
     }
     case LightType::Rect:
     case LightType::Disk: {
-      // Stratified points over the area (a grid in (s, t), or in (r^2, phi) for the disk,
-      // both area-preserving), weight dA cos(theta_x) / d^2. Points the probe sees from
-      // behind get weight 0.
-      const int n1 = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(wanted)))));
-      const int n2 = std::max(1, (wanted + n1 - 1) / n1);
+      // Uniform by area ((s, t), or (r^2, phi) for the disk: both area-preserving), weight
+      // A cos(theta_x) / d^2; a point the probe sees from behind weighs 0.
       const bool rect = light.type == LightType::Rect;
       const Vec3d c = vec(light.position);
       Vec3d e1 = vec(light.right), e2 = vec(light.up), n = cross(e1, e2);
@@ -208,82 +194,45 @@ void sample_light(const scene::SceneLight& light, Vec3d from, int wanted, Rng& r
         basis_of(n, e1, e2);
       }
       const double area = rect ? light.width * light.height : kPi * light.radius * light.radius;
-      for (int a = 0; a < n1; ++a)
-        for (int b = 0; b < n2; ++b) {
-          const double s = (a + rng.uniform()) / n1, t = (b + rng.uniform()) / n2;
-          Vec3d x;
-          if (rect) {
-            x = c + ((s - 0.5) * light.width) * e1 + ((t - 0.5) * light.height) * e2;
-          } else {
-            const double rho = light.radius * std::sqrt(s), phi = 2.0 * kPi * t;
-            x = c + (rho * std::cos(phi)) * e1 + (rho * std::sin(phi)) * e2;
-          }
-          const Vec3d to = x - from;
-          const double dist = norm(to);
-          const Vec3d w = (1.0 / dist) * to;
-          const double cos_x = -dot(n, w);
-          out.samples.push_back({w, dist, cos_x > 0 ? area / (n1 * n2) * cos_x / (dist * dist) : 0.0});
-        }
-      return;
+      Vec3d x;
+      if (rect) {
+        x = c + ((u1 - 0.5) * light.width) * e1 + ((u2 - 0.5) * light.height) * e2;
+      } else {
+        const double rho = light.radius * std::sqrt(u1), phi = 2.0 * kPi * u2;
+        x = c + (rho * std::cos(phi)) * e1 + (rho * std::sin(phi)) * e2;
+      }
+      const Vec3d to = x - from;
+      const double dist = norm(to);
+      const Vec3d w = (1.0 / dist) * to;
+      const double cos_x = -dot(n, w);
+      return {w, dist, cos_x > 0 ? area * cos_x / (dist * dist) : 0.0};
     }
-    default: return;  // distant lights are never sampled
+    default: return {};  // distant lights are never sampled
   }
 }
 
 Rgb light_irradiance(const scene::SceneLight& light, Vec3d x, Vec3d n, double epsilon, const Tracer& tracer,
-                     Rng& rng, std::uint64_t& rays) {
+                     double u1, double u2, std::uint64_t& rays) {
   Rgb out{0, 0, 0};
   if (is_distant(light)) return out;
+  const LightSample s = light_point(light, x, u1, u2);
   Rgb radiance = extended_radiance(light);
-  Vec3d dir;
-  double distance = kInf, weight = 0;  // weight: 1 / pdf in solid angle (or the delta's E)
+  double weight = s.weight;  // 1 / pdf in solid angle; for a delta light, its E below
   if (is_delta(light)) {
-    LightSamples s;
-    sample_light(light, x, 1, rng, s);
-    dir = s.samples.front().dir;
-    distance = s.samples.front().distance;
     // E = I f / r^2 (point, spot) or E (directional), times the cosine below.
-    weight = 1.0;
     radiance = light.colour;
+    weight = 1.0;
     if (light.type != LightType::Directional) {
-      weight = 1.0 / (distance * distance);
+      weight = 1.0 / (s.distance * s.distance);
       if (light.type == LightType::Spot)
         weight *= spot_falloff({light.position, light.direction, light.inner_angle, light.outer_angle},
-                               -dot(vec(light.direction), dir));
+                               -dot(vec(light.direction), s.dir));
     }
-  } else if (light.type == LightType::Directional || light.type == LightType::Sphere) {
-    // One direction uniform in the cap: v = 1 - cos theta' uniform in [0, 1 - cos a].
-    Vec3d axis = -1.0 * vec(light.direction);
-    double one_minus_cos;
-    if (light.type == LightType::Directional) {
-      const double s = std::sin(0.25 * light.angular_diameter);
-      one_minus_cos = 2.0 * s * s;
-    } else {
-      const Vec3d pc = vec(light.position) - x;
-      const double r = norm(pc);
-      if (r <= light.radius) return out;  // a surface inside the light: not lit by it
-      const double cos_a = std::sqrt((r - light.radius) * (r + light.radius)) / r;
-      one_minus_cos = (light.radius / r) * (light.radius / r) / (1.0 + cos_a);
-      axis = (1.0 / r) * pc;
-    }
-    Vec3d e1, e2;
-    basis_of(axis, e1, e2);
-    const double v = one_minus_cos * rng.uniform(), phi = 2.0 * kPi * rng.uniform();
-    const double s = std::sqrt(v * (2.0 - v));
-    dir = (1.0 - v) * axis + (s * std::cos(phi)) * e1 + (s * std::sin(phi)) * e2;
-    weight = 2.0 * kPi * one_minus_cos;
-    if (light.type == LightType::Sphere) distance = sphere_distance(x, dir, vec(light.position), light.radius);
-  } else {
-    LightSamples s;  // rect or disk: one uniform point of the area, weight A cos_x / d^2
-    sample_light(light, x, 1, rng, s);
-    dir = s.samples.front().dir;
-    distance = s.samples.front().distance;
-    weight = s.samples.front().weight;
   }
-  const double scale = weight * dot(n, dir);
+  const double scale = weight * dot(n, s.dir);
   if (!(scale > 0)) return out;
   ++rays;
-  if (tracer.occluded(x, dir, epsilon, distance * (1.0 - 1e-7))) return out;
+  if (tracer.occluded(x, s.dir, epsilon, s.distance * (1.0 - 1e-7))) return out;
   for (int c = 0; c < 3; ++c) out[c] = radiance[c] * scale;
   return out;
 }

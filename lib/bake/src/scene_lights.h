@@ -35,25 +35,25 @@ Bounds shape_bounds(const scene::SceneShape& shape) noexcept;
 // or ray against the box grown by R (or by the cone's widest radius over the box).
 bool can_shadow(const scene::SceneLight& light, Vec3d probe, const Bounds& bounds) noexcept;
 
-// Points of a light as seen from `from`: direction, distance to the light along it (inf for
-// a directional light) and solid-angle weight (sr); the light's radiance is `radiance`.
-// Delta lights give one sample of weight 0 (their closed form carries the value). `wanted`
-// is the scene's shadow_samples; the rules are in bake.h and docs/scenes.md.
+// A light as seen from `from`, for shadow rays: a delta light's one direction (weight 0: its
+// closed form carries the value), or the point of an extended light that (u1, u2), uniform
+// in [0, 1)^2, picks: uniform in solid angle over the cap of a sphere light or a sun, uniform
+// by area over a rect or disk. `weight` is 1 / pdf per steradian (0 for a point seen from
+// behind), `distance` the distance to the light along `dir` (inf for a sun).
 struct LightSample {
   Vec3d dir;
   double distance = 0;
   double weight = 0;
 };
-struct LightSamples {
-  Rgb radiance{};
-  std::vector<LightSample> samples;
-};
-void sample_light(const scene::SceneLight& light, Vec3d from, int wanted, Rng& rng, LightSamples& out);
+bool is_delta(const scene::SceneLight& light) noexcept;
+LightSample light_point(const scene::SceneLight& light, Vec3d from, double u1, double u2) noexcept;
+// The uniform radiance of an extended light (lights.h's normalisations).
+Rgb light_radiance(const scene::SceneLight& light) noexcept;
 
-// Irradiance at a surface point x with unit normal n from one light, by one sample and one
-// shadow ray (delta lights exactly, with their ray); distant lights give 0 (paths find them
-// on escape). `rays` counts the rays traced.
+// Irradiance at a surface point x with unit normal n from one light, by the sample (u1, u2)
+// and one shadow ray (delta lights exactly, with their ray); distant lights give 0 (paths find
+// them on escape). `rays` counts the rays traced.
 Rgb light_irradiance(const scene::SceneLight& light, Vec3d x, Vec3d n, double epsilon, const Tracer& tracer,
-                     Rng& rng, std::uint64_t& rays);
+                     double u1, double u2, std::uint64_t& rays);
 
 }  // namespace shpack::bake

@@ -88,12 +88,15 @@ Hit Tracer::intersect(const Vec3d& origin, const Vec3d& dir, double t_min, doubl
   hit.t = rh.ray.tfar;
   Vec3d n{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
   const double len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-  const double sign = (n.x * dir.x + n.y * dir.y + n.z * dir.z) > 0 ? -1.0 : 1.0;  // face the origin
+  hit.backface = (n.x * dir.x + n.y * dir.y + n.z * dir.z) > 0;
+  const double sign = hit.backface ? -1.0 : 1.0;  // face the origin
   hit.normal = {sign * n.x / len, sign * n.y / len, sign * n.z / len};
   return hit;
 }
 
 bool Tracer::occluded(const Vec3d& origin, const Vec3d& dir, double t_min, double t_max) const noexcept {
+  // An empty interval holds nothing (and a negative tfar would read as Embree's "hit" below).
+  if (!(t_max > t_min)) return false;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay ray;

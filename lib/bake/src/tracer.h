@@ -24,6 +24,11 @@ struct Hit {
   std::uint32_t shape = 0;  // index into Scene::geometry
   double t = 0;             // distance along the unit direction
   Vec3d normal;             // unit geometric normal, facing the ray's origin
+  // The ray met the shape's back: Embree's raw geometric normal Ng points along the ray.
+  // Ng is (v1 - v0) x (v2 - v0) for a triangle (counter-clockwise front, Embree's
+  // RTC_GEOMETRY_TYPE_TRIANGLE) and outward for a sphere; the loader winds boxes outward,
+  // planes towards right x up and meshes as their files do (scene_loader.cpp).
+  bool backface = false;
 };
 
 class Tracer {

@@ -5,11 +5,13 @@
  * error code plus a message on every fallible call. Nothing throws across this boundary and
  * nothing here keeps hidden error state: a message is a static string, valid forever.
  *
- * What it computes is what `shpack convert` computes for an equirect map (docs/json-format.md,
- * docs/conventions.md): radiance coefficients in Unity's frame, the 27 floats of a
- * UnityEngine.Rendering.SphericalHarmonicsL2, the seven shader vectors unity_SHAr..unity_SHC,
- * and the minimum of E/pi per channel, bit-identical to the CLI's JSON for the same texels
- * and options (pipeline.h).
+ * What it computes is what `shpack convert` computes for a map held in memory (docs/json-format.md,
+ * docs/conventions.md, docs/layouts.md): radiance coefficients in Unity's frame, the 27 floats
+ * of a UnityEngine.Rendering.SphericalHarmonicsL2, the seven shader vectors
+ * unity_SHAr..unity_SHC, the minimum of E/pi per channel and the extracted sun,
+ * bit-identical to the CLI's JSON for the same texels and options (pipeline.h).
+ * shpack_convert takes every layout and option of `convert`; shpack_convert_equirect and the
+ * projector are the first version's equirect-only calls, kept as they were.
  *
  * Layout of the arrays, all channel-major (R, G, B):
  *   radiance_sh[9 c + i]   L_c,i, doubles
@@ -18,7 +20,9 @@
  *
  * Structs have a fixed layout on every 64-bit platform (no padding between members as
  * declared; shpack_result has 4 bytes of tail padding), so C# can mirror them with
- * LayoutKind.Sequential. Thread safety: every function
+ * LayoutKind.Sequential. The structs of shpack_convert start with struct_size, which the
+ * caller sets to the sizeof it was compiled with: a later version that appends members can
+ * tell an older caller's struct by its size. Thread safety: every function
  * may be called from any thread; one projector must not be used by two threads at once.
  */
 #ifndef SHPACK_C_H
@@ -104,6 +108,75 @@ typedef struct shpack_result {
   float shader[28];          /* unity_SHAr .. unity_SHC */
 } shpack_result;
 
+/* ---- shpack_convert: every layout and option of `shpack convert` ----------------------- */
+
+/* shpack_map.layout (docs/layouts.md). AUTO detects it from the image's size as `convert`
+ * does: 2:1 equirect, 4:3 HCROSS, 3:4 VCROSS, 6:1 HSTRIP, 1:6 VSTRIP; a square image is
+ * ambiguous and must be named. FACES: the six faces[] instead of one image. */
+enum {
+  SHPACK_LAYOUT_AUTO = 0,
+  SHPACK_LAYOUT_EQUIRECT = 1,   /* Unity's Skybox/Panoramic latitude-longitude */
+  SHPACK_LAYOUT_HCROSS = 2,     /* 4N x 3N */
+  SHPACK_LAYOUT_VCROSS = 3,     /* 3N x 4N, -Z rotated 180 degrees */
+  SHPACK_LAYOUT_HSTRIP = 4,     /* 6N x N, +X -X +Y -Y +Z -Z left to right */
+  SHPACK_LAYOUT_VSTRIP = 5,     /* N x 6N, the same top to bottom */
+  SHPACK_LAYOUT_OCTAHEDRAL = 6, /* Unity's octahedral encoding, N x N */
+  SHPACK_LAYOUT_ANGULAR = 7,    /* Debevec's angular map, N x N */
+  SHPACK_LAYOUT_MIRRORBALL = 8, /* a mirror ball photographed along +Z, N x N */
+  SHPACK_LAYOUT_FACES = 9       /* six N x N faces in Unity's CubemapFace order */
+};
+/* shpack_map.cube_frame: the world cube faces were made in (`convert --cube-frame`). */
+enum { SHPACK_CUBE_FRAME_UNITY = 0, SHPACK_CUBE_FRAME_GL = 1, SHPACK_CUBE_FRAME_THREEJS = 2 };
+
+/* The pixels of one environment map. Each face of FACES is a view like `image`, row 0 at
+ * the top of the face as docs/conventions.md orients it (Unity's CubemapFace order +X, -X,
+ * +Y, -Y, +Z, -Z); a bottom-up face takes a negative row_stride. */
+typedef struct shpack_map {
+  uint32_t struct_size; /* sizeof(shpack_map) */
+  int32_t layout;       /* SHPACK_LAYOUT_* */
+  int32_t cube_frame;   /* SHPACK_CUBE_FRAME_*; UNITY for layouts that are not cubes */
+  uint32_t reserved;    /* 0; keeps `image` 8-byte aligned without hidden padding */
+  shpack_image image;   /* every layout but FACES */
+  shpack_image faces[6];
+} shpack_map;
+
+typedef struct shpack_convert_options {
+  uint32_t struct_size; /* sizeof(shpack_convert_options) */
+  int32_t nonfinite;    /* SHPACK_NONFINITE_* */
+  int32_t negative;     /* SHPACK_NEGATIVE_* */
+  uint32_t threads;     /* worker threads, 0 = all cores; the result does not depend on it */
+  double intensity;     /* linear factor on the radiance, finite and >= 0 (`--intensity`) */
+  double exposure_ev;   /* the radiance is scaled by intensity * 2^exposure_ev (`--exposure`) */
+  double rotate_deg;    /* yaw about +Y, as Skybox/Panoramic's _Rotation (`--rotate`) */
+  const char* method;   /* as `--method`: "exact", "center", "mip:K", "mc:N[:SEED]", ...; NULL = "exact" */
+  const char* window;   /* as `--window`; NULL = "none" */
+  int32_t extract_sun;  /* 1: take the sun out of an equirect map as a light (`--extract-sun`) */
+  int32_t l1;           /* 1: band 2 removed, for Light Probe Proxy Volumes (`--l1`) */
+} shpack_convert_options;
+
+/* A light taken out of the map, in the output's frame and colours (the JSON's "sun"). */
+typedef struct shpack_light {
+  double direction[3];  /* unit, towards the light, Unity's frame, rotation applied */
+  double irradiance[3]; /* E per channel at normal incidence, intensity applied */
+  double sky_level[3];  /* the radiance its texels were given */
+  double angular_radius_deg, solid_angle_sr;
+  uint64_t texels;      /* how many texels were replaced */
+  /* As a Unity directional light (unity_light in the JSON): */
+  double forward[3];    /* = -direction, the light's +Z */
+  double euler_deg[3];  /* Transform.eulerAngles: pitch, yaw, 0 */
+  double quaternion[4]; /* x, y, z, w: turns +Z into forward */
+  double color[3];      /* linear, largest channel 1 */
+  double color_srgb[3]; /* the same colour sRGB-encoded, for Light.color */
+  double intensity;     /* color * intensity = irradiance / pi */
+} shpack_light;
+
+typedef struct shpack_conversion {
+  uint32_t struct_size; /* set by the caller: sizeof(shpack_conversion) */
+  int32_t has_sun;      /* 1 when extract_sun found a sun: `sun` holds it (else zeros) */
+  shpack_result sh;
+  shpack_light sun;
+} shpack_conversion;
+
 /* The library's ABI version (SHPACK_C_ABI_VERSION when it was built) and version text. */
 SHPACK_C_API int32_t shpack_abi_version(void);
 SHPACK_C_API const char* shpack_version(void);
@@ -118,6 +191,19 @@ SHPACK_C_API void shpack_default_options(shpack_options* options);
  * NULL. On failure `result` is left as it was. */
 SHPACK_C_API int32_t shpack_convert_equirect(const shpack_image* image, const shpack_options* options,
                                              shpack_result* result, shpack_error* error);
+
+/* exact, error, keep, all cores, intensity 1, exposure 0, no rotation, no window, no sun, L2;
+ * struct_size set. */
+SHPACK_C_API void shpack_default_convert_options(shpack_convert_options* options);
+
+/* Converts a map of any layout as `shpack convert` does, through the same pipeline: stages 2
+ * to 4 of pipeline.h. Sampling methods and extract_sun take equirect maps only, and
+ * octahedral, angular and mirror ball maps the exact method only. extract_sun works on a
+ * copy: the caller's pixels are never written. The first NaN/Inf texel is reported in image
+ * coordinates (face coordinates and error.face for FACES). `error` may be NULL. On failure
+ * `out` is left as it was. */
+SHPACK_C_API int32_t shpack_convert(const shpack_map* map, const shpack_convert_options* options,
+                                    shpack_conversion* out, shpack_error* error);
 
 /* Streaming, for images that do not fit in memory: create with the full size, add bands of
  * consecutive rows from the top (any heights), finish once, destroy. Memory is bounded by

@@ -1,51 +1,30 @@
 #include "image_open.h"
 
 #include <fcntl.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
-#include <string_view>
 
+#include "exr_decoder.h"
+#include "oiio_plugin.h"
 #include "shpack/io/file_checks.h"
 
 namespace shpack::io::detail {
 namespace {
 
-std::mutex& stderr_mutex() {
-  static std::mutex mutex;
-  return mutex;
-}
-
-void write_all(int fd, const char* data, std::size_t size) {
-  while (size > 0) {
-    const ssize_t n = ::write(fd, data, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return;
-    data += n;
-    size -= static_cast<std::size_t>(n);
-  }
-}
-
-enum class Magic : std::uint8_t { Other, Png, OpenExr };
-
-// What the first bytes of the readable file `path` say it is.
-Magic file_magic(const std::filesystem::path& path) {
-  static constexpr std::array<unsigned char, 8> kPng = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+// Whether the readable file `path` starts with OpenEXR's magic number.
+bool is_openexr(const std::filesystem::path& path) {
   static constexpr std::array<unsigned char, 4> kExr = {0x76, 0x2f, 0x31, 0x01};
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
-  if (fd < 0) return Magic::Other;
-  std::array<unsigned char, 8> head{};
+  if (fd < 0) return false;
+  std::array<unsigned char, 4> head{};
   const ssize_t got = ::read(fd, head.data(), head.size());
   ::close(fd);
-  if (got == static_cast<ssize_t>(head.size()) && head == kPng) return Magic::Png;
-  if (got >= 4 && std::equal(kExr.begin(), kExr.end(), head.begin())) return Magic::OpenExr;
-  return Magic::Other;
+  return got == static_cast<ssize_t>(head.size()) && head == kExr;
 }
 
 // Reads a file through pread, for walking a header without holding it.
@@ -229,78 +208,37 @@ std::string budget_problem(const char* what, long long w, long long h, const Tex
   return line + "), above the budget of " + std::to_string(budget.max_texels) + " (--max-texels)";
 }
 
-QuietLibpng::QuietLibpng(bool active) {
-  if (!active) return;
-  lock_ = std::unique_lock<std::mutex>(stderr_mutex());
-  std::fflush(stderr);
-  capture_ = ::memfd_create("shpack-stderr", MFD_CLOEXEC);
-  if (capture_ < 0) return;
-  saved_ = ::fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 3);
-  if (saved_ < 0 || ::dup2(capture_, STDERR_FILENO) < 0) {
-    if (saved_ >= 0) ::close(saved_);
-    saved_ = -1;
-  }
-}
-
-QuietLibpng::~QuietLibpng() {
-  if (saved_ >= 0) {
-    std::fflush(stderr);
-    ::dup2(saved_, STDERR_FILENO);
-    ::close(saved_);
-    // Pass on what was not libpng's.
-    std::string captured;
-    std::array<char, 4096> buffer;
-    if (::lseek(capture_, 0, SEEK_SET) == 0) {
-      for (ssize_t n; (n = ::read(capture_, buffer.data(), buffer.size())) > 0;)
-        captured.append(buffer.data(), static_cast<std::size_t>(n));
-    }
-    for (std::size_t begin = 0; begin < captured.size();) {
-      std::size_t end = captured.find('\n', begin);
-      end = end == std::string::npos ? captured.size() : end + 1;
-      const std::string_view line(captured.data() + begin, end - begin);
-      if (line.rfind("libpng error: ", 0) != 0 && line.rfind("libpng warning: ", 0) != 0)
-        write_all(STDERR_FILENO, line.data(), line.size());
-      begin = end;
-    }
-  }
-  if (capture_ >= 0) ::close(capture_);
-}
-
 std::string with_reason(std::string what, const std::string& reason) {
   if (reason.find_first_not_of(" \t\r\n") != std::string::npos) what += " (" + reason + ")";
   return what;
 }
 
 IoStatus open_image(const std::filesystem::path& path, const TexelBudget& budget,
-                    std::unique_ptr<OIIO::ImageInput>& in, bool& png) {
-  in.reset();
+                    std::unique_ptr<ImageDecoder>& decoder) {
+  decoder.reset();
   if (IoStatus st = check_readable_file(path); !st.ok()) return st;
-  const Magic magic = file_magic(path);
-  png = magic == Magic::Png;
-  if (magic == Magic::OpenExr) {
+  std::string reason;
+  if (is_openexr(path)) {
     if (const std::string problem = exr_header_problem(path, budget); !problem.empty())
       return IoStatus::error(IoErrc::Unsupported, path, problem);
+    decoder = open_exr(path, reason);
+  } else {
+    std::string problem;
+    const OiioPlugin* plugin = oiio_plugin(problem);
+    if (plugin == nullptr)
+      return IoStatus::error(IoErrc::Unreadable, path, "formats other than OpenEXR are read through OpenImageIO: " + problem);
+    decoder.reset(plugin->open(path.c_str(), &reason));
   }
-  // Colour is wanted as stored: PNG/TIFF readers would otherwise premultiply it by alpha.
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  {
-    const QuietLibpng quiet(png);
-    in = OIIO::ImageInput::open(path.string(), &config);
-  }
-  if (!in) {
-    return IoStatus::error(IoErrc::Unreadable, path, with_reason("not an image that can be read", OIIO::geterror()));
-  }
+  if (!decoder) return IoStatus::error(IoErrc::Unreadable, path, with_reason("not an image that can be read", reason));
   return IoStatus::success();
 }
 
-std::string spec_problem(const OIIO::ImageSpec& spec) {
-  if (spec.width <= 0 || spec.height <= 0) return "the image has zero size";
-  if (spec.nchannels <= 0) return "the image has no channels";
-  if (spec.deep) return "the image holds deep data, not an environment map";
-  if (spec.depth > 1) return "the image is a volume, not an environment map";
+std::string part_problem(const ImagePart& part) {
+  if (part.data.width <= 0 || part.data.height <= 0 || part.display.width <= 0 || part.display.height <= 0)
+    return "the image has zero size";
+  if (part.channels.empty()) return "the image has no channels";
   // A data window other than the display window is fine: image_source.h reads it.
-  return {};
+  return part.problem;
 }
 
 }  // namespace shpack::io::detail

@@ -8,7 +8,7 @@
 //    R"), or with no colour channel at all (only A, Z, ...), fails naming the channels it
 //    has; one whose channels all carry a layer prefix ("diffuse.R") fails listing the
 //    layers. (OpenImageIO names the channels of PNG, HDR, PFM, TIFF, JPEG R, G, B [, A] or
-//    Y [, A].) With a layer NAME: the subimage (EXR part) named NAME, read as above; else the
+//    Y [, A].) With a layer NAME: the part (EXR part, OpenImageIO subimage) named NAME, read as above; else the
 //    channels NAME.R, NAME.G, NAME.B (or NAME.Y) of the first subimage that has them.
 //    Anything else fails and lists the file's layers.
 //  - Budget. The display window and the data window, as the header declares them, are each
@@ -16,12 +16,11 @@
 //    before anything is allocated or decoded.
 //  - Window. The image is the display window (OpenEXR's displayWindow, OpenImageIO's "full"
 //    window); texels outside the data window are black (0), and data outside the display
-//    window is not read.
-//  - Values. Converted to float by OpenImageIO (integers as value / max), integer sRGB
-//    linearised (pixel_encoding.h), nothing else changed; alpha and other channels dropped.
+//    window is not kept.
+//  - Values. Converted to float by the format's reader (image_decoder.h; integers as value /
+//    max), integer sRGB linearised (pixel_encoding.h), nothing else changed; alpha and other
+//    channels dropped.
 #pragma once
-
-#include <OpenImageIO/imageio.h>
 
 #include <array>
 #include <cstdint>
@@ -31,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "image_decoder.h"
 #include "image_open.h"
 #include "shpack/io/image_file.h"
 #include "shpack/io/io_status.h"
@@ -51,7 +51,7 @@ class ImageSource {
   const std::string& format() const noexcept { return format_; }
   // The EXR "chromaticities" attribute (red x, y, green x, y, blue x, y, white x, y), if any.
   const std::optional<std::array<double, 8>>& chromaticities() const noexcept { return chromaticities_; }
-  void set_threads(unsigned threads) { in_->threads(static_cast<int>(threads)); }
+  void set_threads(unsigned threads) { decoder_->set_threads(threads); }
 
   // Display rows [first, first + count) into `out` (count * width() * channels() floats,
   // row-major). Errors name the file and the rows.
@@ -59,17 +59,15 @@ class ImageSource {
 
  private:
   std::filesystem::path path_;
-  std::unique_ptr<OIIO::ImageInput> in_;
-  OIIO::ImageSpec spec_;  // of the chosen subimage
-  int subimage_ = 0;
+  std::unique_ptr<ImageDecoder> decoder_;
+  std::size_t part_ = 0;              // the chosen part
+  PixelWindow data_, display_;        // of the chosen part
   std::array<int, 3> channel_{};      // file channel of R, G, B (of grey in [0])
-  int first_channel_ = 0, last_channel_ = 0;  // the contiguous range read, [first, last)
   std::uint32_t width_ = 0, height_ = 0, used_ = 0, file_channels_ = 0;
   bool srgb_ = false;
   std::string format_;
   std::optional<std::array<double, 8>> chromaticities_;
-  std::vector<float> scratch_;  // a band of data rows, when they cannot be read in place
-  bool png_ = false;            // read through QuietLibpng
+  std::vector<float> scratch_;  // a band of data rows, when they are not the display's
 };
 
 // read_image_file (image_file.h) under `budget`.

@@ -291,6 +291,8 @@ void add_vertex(SceneShape& shape, double x, double y, double z, const std::stri
   shape.vertices.push_back(static_cast<float>(z));
 }
 
+// The rectangle c +- hu u +- hv v as two triangles whose normal (v1 - v0) x (v2 - v0), the
+// front side (Embree's convention, tracer.h), is u x v.
 void add_quad(SceneShape& shape, Point3 c, Dir3 u, Dir3 v, double hu, double hv, const std::string& blame,
               double value) {
   const auto base = static_cast<std::uint32_t>(shape.vertices.size() / 3);
@@ -329,6 +331,11 @@ void place_mesh(SceneShape& shape, const std::vector<double>& positions, std::ve
   for (const std::uint32_t i : indices)  // the readers check theirs; a last guard for Embree
     if (i >= vertex_count) throw mesh_error("a triangle refers to vertex " + std::to_string(i) + " of " +
                                             std::to_string(vertex_count));
+  // The file's counter-clockwise triangles face front (OBJ's convention; glTF 2.0, "Meshes"): their
+  // normal (v1 - v0) x (v2 - v0) is the front side. A mirror turns that normal inwards, so
+  // mirrored triangles are listed in the reverse order to keep their front outside.
+  if (right_handed)
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) std::swap(indices[t + 1], indices[t + 2]);
   shape.indices = std::move(indices);
 }
 
@@ -412,13 +419,14 @@ std::vector<SceneShape> read_shape(const Json& j, const std::string& path, const
     if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) throw SceneError{join(path, "max"), "must exceed min on every axis"};
     const Point3 c{0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y), 0.5 * (lo.z + hi.z)};
     const double hx = 0.5 * (hi.x - lo.x), hy = 0.5 * (hi.y - lo.y), hz = 0.5 * (hi.z - lo.z);
-    // Six faces: centre of the face, two in-plane axes, their half-sizes.
-    add_quad(shape, {c.x + hx, c.y, c.z}, {0, 0, 1}, {0, 1, 0}, hz, hy, join(path, "max"), hi.x);
+    // Six faces: centre of the face, two in-plane axes u, v, their half-sizes. u x v points
+    // out of the box on every face, so that the triangles' front faces are outside (add_quad).
+    add_quad(shape, {c.x + hx, c.y, c.z}, {0, 1, 0}, {0, 0, 1}, hy, hz, join(path, "max"), hi.x);
     add_quad(shape, {c.x - hx, c.y, c.z}, {0, 0, 1}, {0, 1, 0}, hz, hy, join(path, "max"), hi.x);
-    add_quad(shape, {c.x, c.y + hy, c.z}, {1, 0, 0}, {0, 0, 1}, hx, hz, join(path, "max"), hi.x);
+    add_quad(shape, {c.x, c.y + hy, c.z}, {0, 0, 1}, {1, 0, 0}, hz, hx, join(path, "max"), hi.x);
     add_quad(shape, {c.x, c.y - hy, c.z}, {1, 0, 0}, {0, 0, 1}, hx, hz, join(path, "max"), hi.x);
     add_quad(shape, {c.x, c.y, c.z + hz}, {1, 0, 0}, {0, 1, 0}, hx, hy, join(path, "max"), hi.x);
-    add_quad(shape, {c.x, c.y, c.z - hz}, {1, 0, 0}, {0, 1, 0}, hx, hy, join(path, "max"), hi.x);
+    add_quad(shape, {c.x, c.y, c.z - hz}, {0, 1, 0}, {1, 0, 0}, hy, hx, join(path, "max"), hi.x);
   } else {
     shape.type = ShapeType::Mesh;
     return read_mesh(shape, j, path, scene_file);
@@ -446,6 +454,27 @@ SceneEffects read_effects(const Json& j, bool has_environment) {
   return e;
 }
 
+// The Monte Carlo effects' target and cap (ranges checked by the schema).
+void read_accuracy_settings(const Json& s, SceneSettings& settings) {
+  if (s.contains("target_error_pct"))
+    settings.target_error_pct = number(s.at("target_error_pct"), "settings.target_error_pct");
+  settings.max_samples = value_or(s, "max_samples", settings.max_samples);
+}
+
+// Probe validity (docs/scenes.md): threshold, policy and reach (ranges checked by the schema).
+void read_validity_settings(const Json& s, SceneSettings& settings) {
+  if (s.contains("validity_threshold"))
+    settings.validity_threshold = number(s.at("validity_threshold"), "settings.validity_threshold");
+  if (s.contains("max_offset")) settings.max_offset = number(s.at("max_offset"), "settings.max_offset");
+  if (s.contains("invalid_probes")) {
+    const std::string policy = s.at("invalid_probes").get<std::string>();
+    settings.invalid_probes = policy == "keep"     ? InvalidProbes::Keep
+                              : policy == "error"  ? InvalidProbes::Error
+                              : policy == "offset" ? InvalidProbes::Offset
+                                                   : InvalidProbes::Dilate;
+  }
+}
+
 Scene read_scene(const Json& doc, const fs::path& file, std::optional<std::uint64_t> seed) {
   Scene scene;
   scene.file = file;
@@ -464,6 +493,8 @@ Scene read_scene(const Json& doc, const fs::path& file, std::optional<std::uint6
     scene.settings.shadow_samples = value_or(s, "shadow_samples", scene.settings.shadow_samples);
     scene.settings.sky_samples = value_or(s, "sky_samples", scene.settings.sky_samples);
     scene.settings.bounce_samples = value_or(s, "bounce_samples", scene.settings.bounce_samples);
+    read_accuracy_settings(s, scene.settings);
+    read_validity_settings(s, scene.settings);
   }
   if (seed) scene.settings.seed = *seed;  // taken out before validation
   return scene;

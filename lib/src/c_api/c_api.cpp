@@ -1,10 +1,12 @@
-// c_api.cpp - the C ABI (shpack_c.h) over the core: plain structs in, plain structs out.
+// c_api.cpp - the first version's entry points of the C ABI (shpack_c.h): equirect maps, whole
+// or streamed, and the shader; shpack_convert is in c_api_convert.cpp.
 // Every function is noexcept in effect: the core never throws, and the only allocation here
 // (the projector handle) uses nothrow new.
 #include "shpack/shpack_c.h"
 
 #include <new>
 
+#include "c_api_common.h"
 #include "shpack/pipeline.h"
 
 struct shpack_projector {
@@ -17,57 +19,20 @@ namespace {
 
 using shpack::Errc;
 using shpack::Status;
-
-int32_t code_of(Errc code) {
-  switch (code) {
-    case Errc::Ok: return SHPACK_OK;
-    case Errc::InvalidArgument: return SHPACK_INVALID_ARGUMENT;
-    case Errc::BadView: return SHPACK_BAD_VIEW;
-    case Errc::NonFiniteTexel: return SHPACK_NONFINITE_TEXEL;
-    case Errc::BadSequence: return SHPACK_BAD_SEQUENCE;
-    case Errc::OutOfMemory: return SHPACK_OUT_OF_MEMORY;
-    case Errc::OutOfRange: return SHPACK_OUT_OF_RANGE;
-    default: return SHPACK_INTERNAL;
-  }
-}
-
-int32_t report(const Status& st, shpack_error* error) {
-  const int32_t code = code_of(st.code);
-  if (error != nullptr) *error = {code, st.x, st.y, st.face, st.what};
-  return code;
-}
-
-int32_t invalid(const char* what, shpack_error* error) {
-  return report(Status::error(Errc::InvalidArgument, what), error);
-}
-
-// The core's view of a shpack_image (0 strides mean packed).
-Status to_view(const shpack_image& image, shpack::ImageView& view) {
-  if (image.pixel_type != SHPACK_PIXEL_F32 && image.pixel_type != SHPACK_PIXEL_F16)
-    return Status::error(Errc::InvalidArgument, "pixel_type must be SHPACK_PIXEL_F32 or SHPACK_PIXEL_F16");
-  view = {static_cast<const std::byte*>(image.data),
-          image.pixel_type == SHPACK_PIXEL_F32 ? shpack::PixelType::F32 : shpack::PixelType::F16,
-          image.width,
-          image.height,
-          image.channels,
-          image.pixel_stride == 0 ? shpack::kAutoStride : image.pixel_stride,
-          image.row_stride == 0 ? shpack::kAutoStride : image.row_stride};
-  return shpack::resolve_view(view);
-}
+using shpack::c_api::invalid;
+using shpack::c_api::report;
+using shpack::c_api::result_of;
+using shpack::c_api::to_policies;
+using shpack::c_api::to_view;
 
 // The pipeline's options (pipeline.h) of a shpack_options.
 Status to_options(const shpack_options& options, shpack::ConvertOptions& out) {
   if (options.method != SHPACK_METHOD_EXACT && options.method != SHPACK_METHOD_CENTER)
     return Status::error(Errc::InvalidArgument, "method must be SHPACK_METHOD_EXACT or SHPACK_METHOD_CENTER");
-  if (options.nonfinite != SHPACK_NONFINITE_ERROR && options.nonfinite != SHPACK_NONFINITE_ZERO)
-    return Status::error(Errc::InvalidArgument, "nonfinite must be SHPACK_NONFINITE_ERROR or SHPACK_NONFINITE_ZERO");
-  if (options.negative != SHPACK_NEGATIVE_KEEP && options.negative != SHPACK_NEGATIVE_CLAMP)
-    return Status::error(Errc::InvalidArgument, "negative must be SHPACK_NEGATIVE_KEEP or SHPACK_NEGATIVE_CLAMP");
   shpack::ConvertOptions result;
+  if (Status st = to_policies(options.nonfinite, options.negative, result); !st.ok()) return st;
   result.method.method =
       options.method == SHPACK_METHOD_EXACT ? shpack::SamplingMethod::Exact : shpack::SamplingMethod::Center;
-  result.nonfinite = options.nonfinite == SHPACK_NONFINITE_ERROR ? shpack::NonFinite::Error : shpack::NonFinite::Zero;
-  result.negative = options.negative == SHPACK_NEGATIVE_KEEP ? shpack::Negative::Keep : shpack::Negative::Clamp;
   result.threads = options.threads;
   result.finish.intensity = options.intensity;
   result.finish.rotate_deg = options.rotate_deg;
@@ -76,31 +41,6 @@ Status to_options(const shpack_options& options, shpack::ConvertOptions& out) {
   }
   out = result;
   return Status::success();
-}
-
-// The result record of a conversion.
-shpack_result result_of(const shpack::Conversion& conversion) {
-  const shpack::FinishedSh& sh = conversion.sh;
-  shpack_result out{};
-  const shpack::UnitySphericalHarmonicsL2& unity = sh.unity_sh;
-  const shpack::UnityShaderVectors& v = sh.shader;
-  const shpack::UnityShaderVectors::Float4* vectors[7] = {&v.SHAr, &v.SHAg, &v.SHAb, &v.SHBr, &v.SHBg, &v.SHBb, &v.SHC};
-  for (int c = 0; c < shpack::kChannelCount; ++c) {
-    for (int i = 0; i < shpack::kShCount; ++i) {
-      out.radiance_sh[9 * c + i] = sh.radiance.c[c][i];
-      out.unity_sh[9 * c + i] = unity[c][i];
-    }
-    out.min_e_over_pi[c] = sh.min_e_over_pi[c].value;
-    out.min_direction[3 * c] = sh.min_e_over_pi[c].direction.x;
-    out.min_direction[3 * c + 1] = sh.min_e_over_pi[c].direction.y;
-    out.min_direction[3 * c + 2] = sh.min_e_over_pi[c].direction.z;
-    for (int l = 0; l < 3; ++l) out.window_factors[3 * c + l] = sh.window.factors[c][l];
-  }
-  for (int k = 0; k < 7; ++k)
-    for (int j = 0; j < 4; ++j) out.shader[4 * k + j] = (*vectors[k])[j];
-  out.nonfinite_texels = conversion.stats.nonfinite_texels;
-  out.negative_texels = conversion.stats.negative_texels;
-  return out;
 }
 
 }  // namespace
@@ -119,6 +59,7 @@ const char* shpack_status_name(int32_t code) {
     case SHPACK_NONFINITE_TEXEL: return "nonfinite_texel";
     case SHPACK_BAD_SEQUENCE: return "bad_sequence";
     case SHPACK_OUT_OF_MEMORY: return "out_of_memory";
+    case SHPACK_OUT_OF_RANGE: return "out_of_range";
     case SHPACK_INTERNAL: return "internal";
     default: return "unknown";
   }

@@ -1,10 +1,10 @@
 #include "projection/row_kernel.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 
 #include "projection/row_kernel_simd.h"
+#include "projection/texel_policy.h"
 
 namespace shpack::detail {
 namespace {
@@ -23,37 +23,24 @@ float load_value(const std::byte* p) noexcept {
 }
 
 // Deinterleaves a row into three planes; a grey image (1 or 2 channels) feeds channel 0
-// to all three. Non-finite and negative values are counted per texel and replaced as the
-// options say (NonFinite::Error also zeroes them: the caller fails the whole projection).
+// to all three. Each texel goes through the options' policies (texel_policy.h);
+// NonFinite::Error also zeroes a NaN/Inf: the caller fails the whole projection.
 template <PixelType T>
-void load_row(const ImageView& row, std::uint32_t y, const ProjectOptions& options,
-              std::span<float> scratch, TexelCounts& counts) noexcept {
+void load_row(const ImageView& row, std::uint32_t y, bool clamp_negative, std::span<float> scratch,
+              TexelCounts& counts) noexcept {
   const std::uint32_t width = row.width;
   float* planes[3] = {scratch.data(), scratch.data() + width, scratch.data() + 2 * width};
   const std::int64_t step = pixel_type_size(T);
   const std::int64_t channel_step[3] = {0, row.channels >= 3 ? step : 0, row.channels >= 3 ? 2 * step : 0};
-  const bool clamp_negative = options.negative == Negative::Clamp;
+  float row_max = 0.0f;
   for (std::uint32_t x = 0; x < width; ++x) {
     const std::byte* p = row.pixel(x, 0);
-    bool nonfinite = false, negative = false;
-    for (int c = 0; c < 3; ++c) {
-      float v = load_value<T>(p + channel_step[c]);
-      if (!std::isfinite(v)) {
-        nonfinite = true;
-        v = 0.0f;
-      } else if (v < 0.0f) {
-        negative = true;
-        if (clamp_negative) v = 0.0f;
-      }
-      counts.max_value = std::max(counts.max_value, static_cast<double>(v));
-      planes[c][x] = v;
-    }
-    if (nonfinite && counts.nonfinite++ == 0) {
-      counts.first_nonfinite_x = x;
-      counts.first_nonfinite_y = y;
-    }
-    counts.negative += negative ? 1 : 0;
+    float rgb[3];
+    for (int c = 0; c < 3; ++c) rgb[c] = load_value<T>(p + channel_step[c]);
+    apply_texel_policy(rgb, x, y, clamp_negative, row_max, counts);
+    for (int c = 0; c < 3; ++c) planes[c][x] = rgb[c];
   }
+  counts.max_value = std::max(counts.max_value, static_cast<double>(row_max));
 }
 
 }  // namespace
@@ -86,16 +73,15 @@ void TexelCounts::merge_after(const TexelCounts& later) noexcept {
 void load_row_planes(const ImageView& row, std::uint32_t y, const ProjectOptions& options,
                      std::span<float> scratch, TexelCounts& counts) noexcept {
   const SimdKernels& simd = simd_kernels();
-  // The fast loader handles clean rows (every value finite and >= 0) of float RGB(A);
-  // any other row, or a row it finds unclean, takes the careful loader that counts.
-  const bool clean = row.type == PixelType::F32 && row.channels >= 3 && simd.load_clean_rgb_f32 &&
-                     simd.load_clean_rgb_f32(row, scratch, counts.max_value);
-  if (!clean) {
-    if (row.type == PixelType::F32) {
-      load_row<PixelType::F32>(row, y, options, scratch, counts);
-    } else {
-      load_row<PixelType::F16>(row, y, options, scratch, counts);
-    }
+  const bool clamp_negative = options.negative == Negative::Clamp;
+  // The vector loader takes float RGB(A) rows of packed texels, whatever their values;
+  // other rows take the portable loader, which gives the same planes and counts.
+  const bool rgb_f32 = row.type == PixelType::F32 && row.channels >= 3;
+  if (rgb_f32 && simd.load_rgb_f32 && simd.load_rgb_f32(row, y, clamp_negative, scratch, counts)) return;
+  if (row.type == PixelType::F32) {
+    load_row<PixelType::F32>(row, y, clamp_negative, scratch, counts);
+  } else {
+    load_row<PixelType::F16>(row, y, clamp_negative, scratch, counts);
   }
 }
 
@@ -114,10 +100,11 @@ void row_column_sums(const ImageView& row, std::uint32_t y, const ProjectOptions
                      const ColumnTables& columns, std::span<float> scratch,
                      TexelCounts& counts, ColumnSums (&sums)[3]) noexcept {
   const SimdKernels& simd = simd_kernels();
-  // The fast kernels handle clean rows (every value finite and >= 0) of float RGB(A);
-  // any other row, or a row they find unclean, takes the careful loader that counts.
+  // The fused kernel takes float RGB(A) rows of packed texels whatever their values, with
+  // the policies applied inside it; any other row is loaded into planes, then summed.
   const bool rgb_f32 = row.type == PixelType::F32 && row.channels >= 3;
-  if (rgb_f32 && simd.sum_clean_rgb_f32 && simd.sum_clean_rgb_f32(row, columns, sums, counts.max_value))
+  if (rgb_f32 && simd.sum_rgb_f32 &&
+      simd.sum_rgb_f32(row, y, options.negative == Negative::Clamp, columns, sums, counts))
     return;
   load_row_planes(row, y, options, scratch, counts);
   for (int c = 0; c < 3; ++c) sums[c] = simd.plane_sums(scratch.data() + c * row.width, columns, row.width);

@@ -1,9 +1,10 @@
 #include "projection/row_kernel_simd.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cfloat>
 #include <cstring>
+
+#include "projection/texel_policy.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define SHPACK_HAVE_AVX2_KERNELS 1
@@ -61,22 +62,47 @@ SHPACK_AVX2 inline void deinterleave_rgb4(__m128 a, __m128 b, __m128 c, __m128& 
   bl = _mm_shuffle_ps(b_lo, b_hi, _MM_SHUFFLE(2, 0, 2, 0));                   // a2 b1 c0 c3
 }
 
-SHPACK_AVX2 bool load_clean_rgb_f32_avx2(const ImageView& row, std::span<float> scratch,
-                                         double& max_value) noexcept {
+// Lanes whose value needs no policy: finite and >= 0 (ordered compares are false for NaN).
+SHPACK_AVX2 inline __m128 clean4(__m128 v) noexcept {
+  return _mm_and_ps(_mm_cmpge_ps(v, _mm_setzero_ps()), _mm_cmple_ps(v, _mm_set1_ps(FLT_MAX)));
+}
+
+// The policies (texel_policy.h) on four values of one channel: NaN and +-Inf (unordered,
+// or |v| > FLT_MAX) to 0, then values below 0 to 0 under clamp; the lanes so marked are
+// or-ed into `nonfinite` and `negative`.
+SHPACK_AVX2 inline __m128 apply_policy4(__m128 v, bool clamp_negative, __m128& nonfinite,
+                                        __m128& negative) noexcept {
+  const __m128 magnitude = _mm_andnot_ps(_mm_set1_ps(-0.0f), v);
+  const __m128 bad = _mm_cmp_ps(magnitude, _mm_set1_ps(FLT_MAX), _CMP_NLE_UQ);
+  v = _mm_andnot_ps(bad, v);
+  const __m128 below = _mm_cmp_ps(v, _mm_setzero_ps(), _CMP_LT_OQ);  // false for -0
+  if (clamp_negative) v = _mm_andnot_ps(below, v);
+  nonfinite = _mm_or_ps(nonfinite, bad);
+  negative = _mm_or_ps(negative, below);
+  return v;
+}
+
+// Four texels (columns x..x+3 of row y) through the policies, counted.
+SHPACK_AVX2 inline void apply_policies4(__m128& r, __m128& g, __m128& b, std::uint32_t x, std::uint32_t y,
+                                        bool clamp_negative, TexelCounts& counts) noexcept {
+  __m128 nonfinite = _mm_setzero_ps(), negative = nonfinite;
+  r = apply_policy4(r, clamp_negative, nonfinite, negative);
+  g = apply_policy4(g, clamp_negative, nonfinite, negative);
+  b = apply_policy4(b, clamp_negative, nonfinite, negative);
+  count_texels(static_cast<std::uint32_t>(_mm_movemask_ps(nonfinite)),
+               static_cast<std::uint32_t>(_mm_movemask_ps(negative)), x, y, counts);
+}
+
+SHPACK_AVX2 bool load_rgb_f32_avx2(const ImageView& row, std::uint32_t y, bool clamp_negative,
+                                   std::span<float> scratch, TexelCounts& counts) noexcept {
   const std::uint32_t width = row.width;
   const std::int64_t stride = row.pixel_stride;
-  if (stride != 12 && stride != 16) return false;  // other layouts take the careful loader
+  if (stride != 12 && stride != 16) return false;  // other layouts take the portable loader
   float* r_out = scratch.data();
   float* g_out = r_out + width;
   float* b_out = g_out + width;
   const float* p = reinterpret_cast<const float*>(row.data);
-  const __m128 zero = _mm_setzero_ps(), top = _mm_set1_ps(FLT_MAX);
-  __m128 ok = _mm_castsi128_ps(_mm_set1_epi32(-1)), vmax = zero;
-  auto check = [&](__m128 v) SHPACK_AVX2 {
-    // Ordered compares are false for NaN, so NaN, +-Inf and negatives all clear `ok`.
-    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(v, zero), _mm_cmple_ps(v, top)));
-    vmax = _mm_max_ps(vmax, v);
-  };
+  __m128 vmax = _mm_setzero_ps();
   // RGBA-strided groups read the last texel's 4th float, which a padded RGB view need not
   // have: the last texel is always left to the scalar tail.
   const std::uint32_t over = stride == 16 ? 1 : 0;
@@ -93,26 +119,26 @@ SHPACK_AVX2 bool load_clean_rgb_f32_avx2(const ImageView& row, std::span<float> 
       _MM_TRANSPOSE4_PS(t0, t1, t2, t3);
       r = t0, g = t1, b = t2;
     }
-    check(r), check(g), check(b);
+    // The check costs what a clean row always paid; only a group holding a NaN, an Inf
+    // or a negative value takes the policies, in place, at the same position.
+    if (_mm_movemask_ps(_mm_and_ps(clean4(r), _mm_and_ps(clean4(g), clean4(b)))) != 0xf)
+      apply_policies4(r, g, b, x, y, clamp_negative, counts);
+    vmax = _mm_max_ps(vmax, _mm_max_ps(r, _mm_max_ps(g, b)));
     _mm_storeu_ps(r_out + x, r);
     _mm_storeu_ps(g_out + x, g);
     _mm_storeu_ps(b_out + x, b);
   }
-  float tail_max = 0.0f;
-  bool tail_ok = true;
+  float row_max = 0.0f;
   for (; x < width; ++x) {
     const float* q = p + (stride / 4) * x;
-    r_out[x] = q[0], g_out[x] = q[1], b_out[x] = q[2];
-    for (int c = 0; c < 3; ++c) {
-      tail_ok = tail_ok && q[c] >= 0.0f && q[c] <= FLT_MAX;
-      tail_max = std::max(tail_max, q[c]);
-    }
+    float rgb[3] = {q[0], q[1], q[2]};
+    apply_texel_policy(rgb, x, y, clamp_negative, row_max, counts);
+    r_out[x] = rgb[0], g_out[x] = rgb[1], b_out[x] = rgb[2];
   }
-  if (_mm_movemask_ps(ok) != 0xf || !tail_ok) return false;
   float lanes[4];
   _mm_storeu_ps(lanes, vmax);
-  const float row_max = std::max({lanes[0], lanes[1], lanes[2], lanes[3], tail_max});
-  max_value = std::max(max_value, static_cast<double>(row_max));
+  row_max = std::max({lanes[0], lanes[1], lanes[2], lanes[3], row_max});
+  counts.max_value = std::max(counts.max_value, static_cast<double>(row_max));
   return true;
 }
 
@@ -137,9 +163,37 @@ struct ChannelAcc512 {
   __m512d s0, sc, ss, sc2, ss2;
 };
 
+// Lanes of `clean` whose value also needs no policy: as unsigned bits, a float is finite
+// and >= +0 exactly when it is <= FLT_MAX's bits (-0 fails: the policies leave it as is).
+SHPACK_AVX512 inline __mmask8 clean8(__m256 v, __mmask8 clean) noexcept {
+  return _mm256_mask_cmp_epu32_mask(clean, _mm256_castps_si256(v), _mm256_set1_epi32(0x7f7fffff), _MM_CMPINT_LE);
+}
+
+// The policies on eight values of one channel, as apply_policy4, marking lanes in masks.
+SHPACK_AVX512 inline __m256 apply_policy8(__m256 v, bool clamp_negative, __mmask8& nonfinite,
+                                          __mmask8& negative) noexcept {
+  const __m256 magnitude = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), v);
+  const __mmask8 bad = _mm256_cmp_ps_mask(magnitude, _mm256_set1_ps(FLT_MAX), _CMP_NLE_UQ);
+  v = _mm256_maskz_mov_ps(static_cast<__mmask8>(~bad), v);
+  const __mmask8 below = _mm256_cmp_ps_mask(v, _mm256_setzero_ps(), _CMP_LT_OQ);  // false for -0
+  if (clamp_negative) v = _mm256_maskz_mov_ps(static_cast<__mmask8>(~below), v);
+  nonfinite = static_cast<__mmask8>(nonfinite | bad);
+  negative = static_cast<__mmask8>(negative | below);
+  return v;
+}
+
+// Eight texels (columns x..x+7 of row y) through the policies, counted.
+SHPACK_AVX512 inline void apply_policies8(__m256& r, __m256& g, __m256& b, std::uint32_t x, std::uint32_t y,
+                                          bool clamp_negative, TexelCounts& counts) noexcept {
+  __mmask8 nonfinite = 0, negative = 0;
+  r = apply_policy8(r, clamp_negative, nonfinite, negative);
+  g = apply_policy8(g, clamp_negative, nonfinite, negative);
+  b = apply_policy8(b, clamp_negative, nonfinite, negative);
+  count_texels(nonfinite, negative, x, y, counts);
+}
+
 SHPACK_AVX512 inline void accumulate_channel(__m256 v, const __m512d (&tab)[4], ChannelAcc512& a,
-                                             __m256& vmin, __m256& vmax) noexcept {
-  vmin = _mm256_min_ps(vmin, v);
+                                             __m256& vmax) noexcept {
   vmax = _mm256_max_ps(vmax, v);
   const __m512d x = _mm512_cvtps_pd(v);
   a.s0 = _mm512_add_pd(a.s0, x);
@@ -149,15 +203,14 @@ SHPACK_AVX512 inline void accumulate_channel(__m256 v, const __m512d (&tab)[4], 
   a.ss2 = _mm512_add_pd(a.ss2, _mm512_mul_pd(x, tab[3]));
 }
 
-// One pass over an interleaved float RGB (kStep = 3) or RGBA (kStep = 4) row: the 15
-// accumulators, the 4 tables and the 3 channels fit the 32 zmm registers together.
-// Cleanliness needs no per-value compare: a NaN or Inf makes S0 (a plain sum, exact in
-// double for any finite floats) non-finite, and a negative value pulls vmin below 0.
+// One pass over an interleaved float RGB (kStep = 3) or RGBA (kStep = 4) row of image row
+// `y`: the 15 accumulators, the 4 tables and the 3 channels fit the 32 zmm registers
+// together. Each group of 8 texels goes through the policies before it is summed.
 template <int kStep>
-SHPACK_AVX512 bool sum_clean_rows_avx512(const float* p, std::uint32_t width, const ColumnTables& t,
-                                         ColumnSums (&sums)[3], double& max_value) noexcept {
+SHPACK_AVX512 void sum_rows_avx512(const float* p, std::uint32_t width, std::uint32_t y, bool clamp_negative,
+                                   const ColumnTables& t, ColumnSums (&sums)[3], TexelCounts& counts) noexcept {
   const double *cos1 = t.cos1.data(), *sin1 = t.sin1.data(), *cos2 = t.cos2.data(), *sin2 = t.sin2.data();
-  __m256 vmin = _mm256_setzero_ps(), vmax = vmin;
+  __m256 vmax = _mm256_setzero_ps();
   const __m512d z = _mm512_setzero_pd();
   ChannelAcc512 r{z, z, z, z, z}, g = r, b = r;
   const __m512i pick_r = channel_indices(kStep, 0), pick_g = channel_indices(kStep, 1),
@@ -172,9 +225,15 @@ SHPACK_AVX512 bool sum_clean_rows_avx512(const float* p, std::uint32_t width, co
     const __m512 hi = kStep == 3 ? _mm512_maskz_loadu_ps(0x00ff, q + 16) : _mm512_loadu_ps(q + 16);
     const __m512d tab[4] = {_mm512_loadu_pd(cos1 + i), _mm512_loadu_pd(sin1 + i),
                             _mm512_loadu_pd(cos2 + i), _mm512_loadu_pd(sin2 + i)};
-    accumulate_channel(_mm512_castps512_ps256(_mm512_permutex2var_ps(lo, pick_r, hi)), tab, r, vmin, vmax);
-    accumulate_channel(_mm512_castps512_ps256(_mm512_permutex2var_ps(lo, pick_g, hi)), tab, g, vmin, vmax);
-    accumulate_channel(_mm512_castps512_ps256(_mm512_permutex2var_ps(lo, pick_b, hi)), tab, b, vmin, vmax);
+    __m256 vr = _mm512_castps512_ps256(_mm512_permutex2var_ps(lo, pick_r, hi));
+    __m256 vg = _mm512_castps512_ps256(_mm512_permutex2var_ps(lo, pick_g, hi));
+    __m256 vb = _mm512_castps512_ps256(_mm512_permutex2var_ps(lo, pick_b, hi));
+    // Three compares, as a clean row always paid; only a group holding a NaN, an Inf or a
+    // negative value takes the policies, in place, at the same position.
+    if (clean8(vb, clean8(vg, clean8(vr, 0xff))) != 0xff) apply_policies8(vr, vg, vb, i, y, clamp_negative, counts);
+    accumulate_channel(vr, tab, r, vmax);
+    accumulate_channel(vg, tab, g, vmax);
+    accumulate_channel(vb, tab, b, vmax);
   }
   double lanes[3][5][kSumLanes];
   const ChannelAcc512* acc[3] = {&r, &g, &b};
@@ -185,23 +244,17 @@ SHPACK_AVX512 bool sum_clean_rows_avx512(const float* p, std::uint32_t width, co
     _mm512_storeu_pd(lanes[c][3], acc[c]->sc2);
     _mm512_storeu_pd(lanes[c][4], acc[c]->ss2);
   }
-  float lane_min[8], lane_max[8];
-  _mm256_storeu_ps(lane_min, vmin);
+  float lane_max[8];
   _mm256_storeu_ps(lane_max, vmax);
   float row_max = 0.0f;
-  for (int k = 0; k < 8; ++k) {
-    if (!(lane_min[k] >= 0.0f)) return false;
-    for (int c = 0; c < 3; ++c)
-      if (!std::isfinite(lanes[c][0][k])) return false;
-    row_max = std::max(row_max, lane_max[k]);
-  }
+  for (float m : lane_max) row_max = std::max(row_max, m);
   const double* tables[4] = {cos1, sin1, cos2, sin2};
   for (std::uint32_t k = 0; i < width; ++i, ++k) {  // tail: lane k = i mod 8, as portable
+    const float* q = p + std::size_t{i} * kStep;
+    float rgb[3] = {q[0], q[1], q[2]};
+    apply_texel_policy(rgb, i, y, clamp_negative, row_max, counts);
     for (int c = 0; c < 3; ++c) {
-      const float v = p[std::size_t{i} * kStep + c];
-      if (!(v >= 0.0f && v <= FLT_MAX)) return false;
-      row_max = std::max(row_max, v);
-      const double x = v;
+      const double x = rgb[c];
       lanes[c][0][k] += x;
       for (int f = 0; f < 4; ++f) lanes[c][f + 1][k] += x * tables[f][i];
     }
@@ -209,16 +262,21 @@ SHPACK_AVX512 bool sum_clean_rows_avx512(const float* p, std::uint32_t width, co
   for (int c = 0; c < 3; ++c)
     sums[c] = {lane_total(lanes[c][0]), lane_total(lanes[c][1]), lane_total(lanes[c][2]),
                lane_total(lanes[c][3]), lane_total(lanes[c][4])};
-  max_value = std::max(max_value, static_cast<double>(row_max));
-  return true;
+  counts.max_value = std::max(counts.max_value, static_cast<double>(row_max));
 }
 
-SHPACK_AVX512 bool sum_clean_rgb_f32_avx512(const ImageView& row, const ColumnTables& t,
-                                            ColumnSums (&sums)[3], double& max_value) noexcept {
+SHPACK_AVX512 bool sum_rgb_f32_avx512(const ImageView& row, std::uint32_t y, bool clamp_negative,
+                                      const ColumnTables& t, ColumnSums (&sums)[3],
+                                      TexelCounts& counts) noexcept {
   const float* p = reinterpret_cast<const float*>(row.data);
-  if (row.pixel_stride == 12) return sum_clean_rows_avx512<3>(p, row.width, t, sums, max_value);
-  if (row.pixel_stride == 16) return sum_clean_rows_avx512<4>(p, row.width, t, sums, max_value);
-  return false;  // other layouts take the portable loaders
+  if (row.pixel_stride == 12) {
+    sum_rows_avx512<3>(p, row.width, y, clamp_negative, t, sums, counts);
+  } else if (row.pixel_stride == 16) {
+    sum_rows_avx512<4>(p, row.width, y, clamp_negative, t, sums, counts);
+  } else {
+    return false;  // other layouts take the portable loader
+  }
+  return true;
 }
 
 #if defined(__GNUC__) && !defined(__clang__)
@@ -227,8 +285,8 @@ SHPACK_AVX512 bool sum_clean_rgb_f32_avx512(const ImageView& row, const ColumnTa
 
 SimdKernels detect() noexcept {
   if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl"))
-    return {plane_sums_avx2, load_clean_rgb_f32_avx2, sum_clean_rgb_f32_avx512};
-  if (__builtin_cpu_supports("avx2")) return {plane_sums_avx2, load_clean_rgb_f32_avx2, nullptr};
+    return {plane_sums_avx2, load_rgb_f32_avx2, sum_rgb_f32_avx512};
+  if (__builtin_cpu_supports("avx2")) return {plane_sums_avx2, load_rgb_f32_avx2, nullptr};
   return {plane_sums_portable, nullptr, nullptr};
 }
 

@@ -21,16 +21,19 @@ inline double lane_total(const double (&l)[kSumLanes]) noexcept {
 
 ColumnSums plane_sums_portable(const float* v, const ColumnTables& t, std::uint32_t width) noexcept;
 
+// The vector kernels take float RGB(A) rows of packed texels (pixel stride 12 or 16 bytes)
+// whatever their values: they apply the NaN/Inf and negative policies (texel_policy.h) and
+// count row `y` into `counts` exactly as the portable loader does, so a row costs the same
+// with or without such texels. They return false, having done nothing, for other layouts.
 struct SimdKernels {
   ColumnSums (*plane_sums)(const float*, const ColumnTables&, std::uint32_t) noexcept;
-  // Deinterleaves a float RGB(A) row into planes if every R, G, B value is finite and
-  // >= 0 (raising max_value), and returns true; returns false otherwise (planes undefined).
-  // Null where no fast loader exists.
-  bool (*load_clean_rgb_f32)(const ImageView&, std::span<float>, double& max_value) noexcept;
-  // Fused: the column sums of a clean float RGB(A) row straight from the interleaved
-  // pixels, true if the row was clean (as above); null where no fused kernel exists.
-  bool (*sum_clean_rgb_f32)(const ImageView&, const ColumnTables&, ColumnSums (&)[3],
-                            double& max_value) noexcept;
+  // Deinterleaves the row into planes R, G, B; null where no vector loader exists.
+  bool (*load_rgb_f32)(const ImageView&, std::uint32_t y, bool clamp_negative, std::span<float>,
+                       TexelCounts&) noexcept;
+  // Fused: the column sums straight from the interleaved pixels; null where no fused
+  // kernel exists.
+  bool (*sum_rgb_f32)(const ImageView&, std::uint32_t y, bool clamp_negative, const ColumnTables&,
+                      ColumnSums (&)[3], TexelCounts&) noexcept;
 };
 
 const SimdKernels& simd_kernels() noexcept;

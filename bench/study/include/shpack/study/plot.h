@@ -1,10 +1,12 @@
 // plot.h - the error-against-time picture of a study, drawn by gnuplot.
 //
 // One point per spec (summarize: median time, worst max error over the inputs), on log
-// axes, one line per method through its parameters; the Pareto front (the specs that no
-// faster spec beats in error) as a grey staircase behind them, and exact, whose error is 0 and
-// cannot sit on a log axis, as a vertical line at its time. gnuplot (docs/dependencies.md)
-// writes the PNG with its cairo terminal and the SVG with its svg terminal.
+// axes, one line per method through its parameters; a random method's (mc, qmc, is) line is
+// its expected error over the draws, in a see-through band from their 10th to their 90th
+// percentile (draws.h). The Pareto front (the specs that no faster spec beats in error) is
+// a grey staircase behind them, and exact, whose error is 0 and cannot sit on a log axis, a
+// vertical line at its time. gnuplot (docs/dependencies.md) writes the PNG with its cairo
+// terminal and the SVG with its svg terminal.
 #pragma once
 
 #include <filesystem>
@@ -20,10 +22,9 @@ namespace shpack::study {
 std::string plot_script(const std::vector<StudyRecord>& records, const std::filesystem::path& png,
                         const std::filesystem::path& svg);
 
-// Writes PREFIX.png and PREFIX.svg with the `gnuplot` found on PATH. Both are drawn under
-// temporary names and renamed once gnuplot succeeded, so a failure replaces neither.
-// Errors: NotFound when gnuplot is not installed, WriteFailed with gnuplot's first error
-// line, each naming the output.
+// Writes PREFIX.png and PREFIX.svg (gnuplot.h: drawn under temporary names, renamed once
+// gnuplot succeeded). Errors: InvalidArgument when no method has an error to plot, and
+// run_gnuplot's.
 io::IoStatus write_plot(const std::vector<StudyRecord>& records, const std::string& prefix);
 
 }  // namespace shpack::study

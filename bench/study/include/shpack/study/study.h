@@ -1,12 +1,17 @@
 // study.h - the accuracy and the time of projection methods on one map (`shpack bench`).
 //
-// For each spec: one untimed projection gives the result (and warms the caches), then
-// `repeats` timed projections of the same in-memory image, each timed alone with
-// std::chrono::steady_clock (wall clock), give the median, min and max. Only the projection
-// is timed: the image is read or made before, and the error measured after. The reference
-// is exact (SamplingMethod::Exact) of the same image, with the same options.
+// For each spec: the projections that give its error, untimed (the first also warms the
+// caches), then `repeats` timed projections of the same in-memory image, each timed alone
+// with std::chrono::steady_clock (wall clock), give the median, min and max. A random method
+// (uses_seed: mc, qmc, is) is one draw of a random estimate, so its error is measured over
+// `seeds` draws, seeds seed, seed + 1, ...: each error is the RMS over the draws (the
+// expected error, sqrt E[e^2]), with its 10th and 90th percentiles; the deterministic methods
+// have one draw. Only the projection is timed (the first draw's spec): the image is read or
+// made before, the errors measured after. The reference is exact (SamplingMethod::Exact) of
+// the same image, with the same options.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -15,6 +20,7 @@
 #include "shpack/io/io_status.h"
 #include "shpack/sampling_methods.h"
 #include "shpack/study/accuracy.h"
+#include "shpack/study/draws.h"
 #include "shpack/study/study_inputs.h"
 
 namespace shpack::study {
@@ -22,6 +28,7 @@ namespace shpack::study {
 struct StudySettings {
   unsigned repeats = 5;  // timed runs per spec, >= 1
   unsigned threads = 1;  // ProjectOptions::threads (0 = all cores); only exact, center, mip use it
+  unsigned seeds = 16;   // draws of each random method, >= 1
 };
 
 struct StudyRecord {
@@ -32,7 +39,10 @@ struct StudyRecord {
   unsigned repeats = 0;
   double samples = 0;        // sample_count (method_sweep.h)
   double time_ms_median = 0, time_ms_min = 0, time_ms_max = 0;
-  AccuracyMetrics accuracy;
+  unsigned seeds = 1;        // draws measured (StudySettings::seeds for a random method)
+  AccuracyMetrics accuracy;  // over the draws as draws.h says: RMS errors, the lowest minimum
+  Spread err_max_spread, err_rms_spread;  // of err_max_pct and err_rms_pct over the draws
+  std::array<double, 3> load_average{};   // /proc/loadavg after the timing (load_average.h)
 };
 
 // Called after each spec, with the number of specs done and their total.
@@ -40,7 +50,7 @@ using StudyProgress = std::function<void(const StudyRecord&, std::size_t done, s
 
 // Appends one record per spec to `out`. Texels are read with NonFinite::Zero (a NaN in a
 // user's map must not stop the study; convert reports them) and Negative::Keep. Errors
-// name the input: InvalidArgument for repeats == 0, Core for a projection that fails
+// name the input: InvalidArgument for repeats or seeds == 0, Core for a projection that fails
 // (OutOfMemory for a large mip or is buffer, or an invalid spec).
 io::IoStatus run_study(const StudyImage& image, const std::vector<MethodSpec>& specs,
                        const StudySettings& settings, std::vector<StudyRecord>& out,

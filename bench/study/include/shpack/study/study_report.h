@@ -17,6 +17,8 @@ struct SpecSummary {
   double err_rms_pct = 0;   // median over the inputs
   double coef_err_max = 0;  // worst input
   double samples = 0;       // median over the inputs (they differ only for mip and exact)
+  unsigned seeds = 1;       // draws per input (study.h)
+  Spread err_max_spread;    // the draws' spread of err_max_pct on the worst input
 };
 
 // In the order the specs first appear in `records`. NaN errors (black maps) are left out
@@ -24,7 +26,9 @@ struct SpecSummary {
 std::vector<SpecSummary> summarize(const std::vector<StudyRecord>& records);
 
 // The convergence rate of one method on one input: the least-squares slope of
-// log(err_rms_pct) against log(samples) over its runs with a positive error. -0.5 is Monte
+// log(err_rms_pct) against log(samples) over its runs with a positive error; for a random
+// method err_rms_pct is the expected error over its draws (draws.h), so the fit reads the
+// rate, not the scatter of single draws. -0.5 is Monte
 // Carlo's N^-1/2; -1 is an O(h^2) rule on a 2-D grid (samples ~ h^-2).
 struct ConvergenceFit {
   std::string input;
@@ -35,14 +39,17 @@ struct ConvergenceFit {
 std::vector<ConvergenceFit> convergence_fits(const std::vector<StudyRecord>& records);
 
 // Markdown: a summary over the inputs (when there are several), the convergence slopes
-// (per input and their median), then one table per input.
+// (per input and their median), then one table per input, each headed by the load average
+// while it was timed.
 std::string markdown_report(const std::vector<StudyRecord>& records);
 
 // A JSON array, one object per record, with the keys input, width, height, method (the
 // name without parameter), param (null for exact and center), spec (method_name), seed
-// (null for the methods that ignore it), threads, repeats, samples, time_ms_median,
-// time_ms_min, time_ms_max, err_max_pct, err_rms_pct, coef_err_max, min_e_over_pi
-// (NaN is null). Ends with a line break.
+// (null for the methods that ignore it; the first of the draws' seeds), seeds (the number of
+// draws), threads, repeats, samples, time_ms_median, time_ms_min, time_ms_max, err_max_pct,
+// err_max_pct_p10, err_max_pct_p90, err_rms_pct, err_rms_pct_p10, err_rms_pct_p90,
+// coef_err_max, min_e_over_pi, load_average (1, 5, 15 minutes) (NaN is null). Ends with a
+// line break.
 std::string json_report(const std::vector<StudyRecord>& records);
 
 }  // namespace shpack::study

@@ -24,7 +24,7 @@ struct ImageFile {
   std::uint32_t channels = 0;          // channels kept in `pixels`: 1 (grey) or 3 (RGB)
   std::uint32_t file_channels = 0;     // channels in the file
   bool srgb_decoded = false;           // integer sRGB pixels were linearised
-  std::string format;                  // OpenImageIO's format name
+  std::string format;                  // the format's name, as OpenImageIO names it
   std::optional<std::array<double, 8>> chromaticities;  // the file's, if it says (colorspace.h)
   std::vector<float> pixels;           // row-major, top row first, `channels` per texel
 

@@ -77,11 +77,28 @@ struct SceneEffects {
   int bounces = 0;             // diffuse interreflections of what the other effects light
 };
 
+// What a probe inside geometry gets (docs/scenes.md, "Probe validity").
+enum class InvalidProbes : std::uint8_t {
+  Dilate,  // the distance-weighted mean of its nearest valid probes
+  Keep,    // what was baked there
+  Error,   // the bake fails, naming the probe and the shape around it
+  Offset,  // baked at the nearest valid point within max_offset; dilated if there is none
+};
+
 struct SceneSettings {
   std::uint64_t seed = 1;
   int shadow_samples = 256;   // points per extended light per probe (rounded up to a full grid)
   int sky_samples = 1024;     // directions per probe for sky_occlusion and emission
   int bounce_samples = 1024;  // paths per probe for bounce
+  // Monte Carlo effects sample each probe until their error estimate is below this share of
+  // its mean E/pi (%), or max_samples; 0: the fixed counts above.
+  double target_error_pct = 1;
+  int max_samples = 65536;    // the cap per probe, per effect, per light
+  // Probe validity: a probe is invalid when more than this share of its rays first hit a
+  // back face (Unity APV's dilation validity threshold, default 0.25).
+  double validity_threshold = 0.25;
+  InvalidProbes invalid_probes = InvalidProbes::Dilate;
+  double max_offset = 0.2;    // metres, for InvalidProbes::Offset
 };
 
 struct Scene {

@@ -1,0 +1,54 @@
+#include "shpack/study/draws.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace shpack::study {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+bool any_nan(const std::vector<double>& values) {
+  return std::any_of(values.begin(), values.end(), [](double v) { return std::isnan(v); });
+}
+
+}  // namespace
+
+double rms(const std::vector<double>& values) {
+  if (values.empty() || any_nan(values)) return kNaN;
+  double sum = 0;
+  for (const double v : values) sum += v * v;
+  return std::sqrt(sum / static_cast<double>(values.size()));
+}
+
+double quantile(std::vector<double> values, double p) {
+  if (values.empty() || any_nan(values)) return kNaN;
+  std::sort(values.begin(), values.end());
+  const double h = static_cast<double>(values.size() - 1) * p;
+  const auto below = static_cast<std::size_t>(std::floor(h));
+  const std::size_t above = std::min(below + 1, values.size() - 1);
+  return values[below] + (h - static_cast<double>(below)) * (values[above] - values[below]);
+}
+
+DrawSummary summarize_draws(const std::vector<AccuracyMetrics>& draws) {
+  if (draws.size() == 1) {  // a deterministic method: its one draw, as measured
+    const AccuracyMetrics& d = draws.front();
+    return {d, {d.err_max_pct, d.err_max_pct}, {d.err_rms_pct, d.err_rms_pct}};
+  }
+  std::vector<double> err_max, err_rms, coef;
+  double lowest_minimum = std::numeric_limits<double>::infinity();
+  for (const AccuracyMetrics& d : draws) {
+    err_max.push_back(d.err_max_pct);
+    err_rms.push_back(d.err_rms_pct);
+    coef.push_back(d.coef_err_max);
+    lowest_minimum = std::min(lowest_minimum, d.min_e_over_pi);
+  }
+  DrawSummary out;
+  out.accuracy = {rms(err_max), rms(err_rms), rms(coef), draws.empty() ? kNaN : lowest_minimum};
+  out.err_max = {quantile(err_max, 0.1), quantile(err_max, 0.9)};
+  out.err_rms = {quantile(err_rms, 0.1), quantile(err_rms, 0.9)};
+  return out;
+}
+
+}  // namespace shpack::study

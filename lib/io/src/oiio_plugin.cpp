@@ -1,0 +1,74 @@
+#include "oiio_plugin.h"
+
+#include <dlfcn.h>
+
+#include <filesystem>
+#include <system_error>
+
+namespace shpack::io::detail {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Loaded {
+  OiioPlugin plugin;
+  bool ok = false;
+  std::string problem;
+};
+
+template <class Fn>
+Fn* symbol(void* module, const char* name) {
+  return reinterpret_cast<Fn*>(::dlsym(module, name));
+}
+
+// Opens the module at `file`; false with the reason in `why`.
+bool load(const fs::path& file, OiioPlugin& plugin, std::string& why) {
+  void* module = ::dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (module == nullptr) {
+    const char* error = ::dlerror();
+    why = error != nullptr ? error : "cannot be opened";
+    return false;
+  }
+  auto* abi = symbol<OiioAbiFn>(module, "shpack_oiio_abi");
+  plugin.open = symbol<OiioOpenFn>(module, "shpack_oiio_open");
+  plugin.encode_png = symbol<OiioEncodePngFn>(module, "shpack_oiio_encode_png");
+  if (abi == nullptr || plugin.open == nullptr || plugin.encode_png == nullptr || abi() != kOiioPluginAbi) {
+    ::dlclose(module);
+    why = file.string() + " is from another build of shpack";
+    return false;
+  }
+  return true;  // never closed: decoders made by it may live until exit
+}
+
+Loaded find_and_load() {
+  Loaded loaded;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) {
+    loaded.problem = "shpack's OpenImageIO module cannot be found (no /proc/self/exe)";
+    return loaded;
+  }
+  const fs::path beside = exe.parent_path() / kOiioPluginFile;
+  const fs::path installed = (exe.parent_path() / SHPACK_PLUGIN_RELDIR / kOiioPluginFile).lexically_normal();
+  std::string why;
+  for (const fs::path& file : {beside, installed}) {
+    if (!fs::exists(file, ec)) continue;
+    loaded.ok = load(file, loaded.plugin, why);
+    if (loaded.ok) return loaded;
+    loaded.problem = "shpack's OpenImageIO module cannot be used (" + why + ")";
+    return loaded;
+  }
+  loaded.problem = "shpack's OpenImageIO module " + std::string(kOiioPluginFile) + " is in neither " +
+                   exe.parent_path().string() + " nor " + installed.parent_path().string();
+  return loaded;
+}
+
+}  // namespace
+
+const OiioPlugin* oiio_plugin(std::string& problem) {
+  static const Loaded loaded = find_and_load();
+  if (!loaded.ok) problem = loaded.problem;
+  return loaded.ok ? &loaded.plugin : nullptr;
+}
+
+}  // namespace shpack::io::detail

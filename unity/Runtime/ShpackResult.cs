@@ -1,0 +1,28 @@
+// ShpackResult.cs - what a conversion in memory returns (shpack_conversion of the C ABI), and
+// the exception a failed one throws.
+using System;
+using UnityEngine.Rendering;
+
+namespace Shpack
+{
+    public sealed class ShpackResult
+    {
+        public double[] RadianceSh;    // 27: L_c,i, channel-major
+        public float[] UnitySh;        // 27: SphericalHarmonicsL2 sh[c, i] at 9c + i
+        public float[] Shader;         // 28: unity_SHAr, SHAg, SHAb, SHBr, SHBg, SHBb, SHC
+        public double[] MinEOverPi;    // 3: lowest E/pi over the sphere per channel
+        public ulong NonFiniteTexels, NegativeTexels;
+        public ShpackLight Sun;        // the extracted sun (ShpackOptions.ExtractSun), or null
+
+        public SphericalHarmonicsL2 ToSphericalHarmonicsL2()
+        {
+            return ShpackProbe.FromFloats(UnitySh);
+        }
+    }
+
+    public sealed class ShpackException : Exception
+    {
+        public readonly int Code;  // the C ABI's return code (SHPACK_*)
+        public ShpackException(int code, string message) : base(message) { Code = code; }
+    }
+}
