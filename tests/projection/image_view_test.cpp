@@ -28,11 +28,7 @@ using shpack::ShL2;
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 RgbImage random_image(std::uint32_t w, std::uint32_t h, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<float> u(0.0f, 100.0f);
-  RgbImage img(w, h);
-  for (float& v : img.rgb) v = u(rng);
-  return img;
+  return shpack_test::uniform_random_image(w, h, seed, 0.0f, 100.0f);
 }
 
 ShL2 project_ok(const ImageView& v, const std::string& what) {

@@ -23,11 +23,7 @@ const float kNaN = std::numeric_limits<float>::quiet_NaN();
 const float kInf = std::numeric_limits<float>::infinity();
 
 RgbImage positive_image(std::uint32_t w, std::uint32_t h, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<float> u(0.5f, 50.0f);
-  RgbImage img(w, h);
-  for (float& v : img.rgb) v = u(rng);
-  return img;
+  return shpack_test::uniform_random_image(w, h, seed, 0.5f, 50.0f);
 }
 
 shpack::ProjectOptions options(shpack::NonFinite nf, shpack::Negative neg = shpack::Negative::Keep,

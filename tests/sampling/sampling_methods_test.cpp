@@ -384,13 +384,15 @@ TEST(SamplingAllMethods, UniformRadianceGivesL00Only) {
   }
 }
 
+// Every method once, at a small parameter: for the texel-policy tests, which read a 1 x 1 image.
+constexpr const char* kEveryMethodOnce[] = {"exact", "center", "mip:1",        "mc:16",  "qmc:16", "fib:16",
+                                            "is:16", "riemann:2", "cube:2", "cube-exact:2", "lsq:16"};
+
 TEST(SamplingAllMethods, NonFiniteTexelsFollowThePolicy) {
   // A 1 x 1 NaN image: every direction falls in the one texel, so every method reads it.
   const float nan_rgb[3] = {std::nanf(""), 1.0f, 1.0f};
   const ImageView nan_view = make_view(nan_rgb, 1, 1, 3);
-  const char* methods[] = {"exact", "center",    "mip:1",  "mc:16",        "qmc:16", "fib:16",
-                           "is:16", "riemann:2", "cube:2", "cube-exact:2", "lsq:16"};
-  for (const char* m : methods) {
+  for (const char* m : kEveryMethodOnce) {
     ShL2 out;
     ProjectOptions options;
     const Status st = project_with_method(nan_view, spec_of(m), options, out);
@@ -426,9 +428,7 @@ TEST(SamplingAllMethods, NonFiniteTexelsFollowThePolicy) {
 TEST(SamplingAllMethods, NegativeTexelsFollowThePolicy) {
   const float neg_rgb[3] = {-1.0f, -2.0f, -3.0f};
   const ImageView view = make_view(neg_rgb, 1, 1, 3);
-  const char* methods[] = {"exact", "center",    "mip:1",  "mc:16",        "qmc:16", "fib:16",
-                           "is:16", "riemann:2", "cube:2", "cube-exact:2", "lsq:16"};
-  for (const char* m : methods) {
+  for (const char* m : kEveryMethodOnce) {
     ShL2 out;
     ProjectOptions options;
     ProjectStats stats;

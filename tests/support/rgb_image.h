@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include "shpack/image_view.h"
@@ -30,5 +31,14 @@ struct RgbImage {
   // A tightly packed float RGB view of the pixels.
   shpack::ImageView view() const { return shpack::make_view(rgb.data(), width, height, 3); }
 };
+
+// A w x h image of values uniform in [lo, hi), the same for the same seed.
+inline RgbImage uniform_random_image(std::uint32_t w, std::uint32_t h, std::uint64_t seed, float lo, float hi) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<float> u(lo, hi);
+  RgbImage img(w, h);
+  for (float& v : img.rgb) v = u(rng);
+  return img;
+}
 
 }  // namespace shpack_test
