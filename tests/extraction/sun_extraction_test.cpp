@@ -199,6 +199,31 @@ TEST(SunExtraction, WrapsAroundTheSeamAndOverThePole) {
 
 TEST(SunExtraction, TurnsAndScalesWithTheMap) { check_extraction(from_angles(20, -30), 90, "rotate 90"); }
 
+TEST(SunExtraction, SetsTheGreyOfAGreyAndAlphaMapAndLeavesItsAlpha) {
+  // Grey + alpha (image_view.h: 2 channels): the projector reads channel 0 only, so the sun's
+  // texels get the sky level there and their alpha stays what it was.
+  const Dir3 centre = from_angles(35, 60);
+  std::vector<float> pixels(std::size_t{kW} * kH * 2);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const Dir3 d = equirect_direction((x + 0.5) / kW, (y + 0.5) / kH);
+      const std::size_t i = (static_cast<std::size_t>(y) * kW + x) * 2;
+      pixels[i] = angle_deg(d, centre) <= kSunRadiusDeg ? 20000.0f : static_cast<float>(sky(d)[1]);
+      pixels[i + 1] = 0.5f;
+    }
+  ImageView view = make_view(pixels.data(), kW, kH, 2);
+  ASSERT_TRUE(resolve_view(view).ok());
+  std::optional<SunLight> sun;
+  ASSERT_TRUE(extract_sun(view, pixels.data(), {}, sun).ok());
+  ASSERT_TRUE(sun.has_value());
+  std::size_t at_sky = 0;
+  for (std::size_t i = 0; i < pixels.size(); i += 2) {
+    EXPECT_EQ(pixels[i + 1], 0.5f) << "texel " << i / 2;
+    at_sky += pixels[i] == static_cast<float>(sun->sky[0]);
+  }
+  EXPECT_GE(at_sky, sun->texels);
+}
+
 TEST(SunExtraction, UnityLightShinesAwayFromTheSunWithColourTimesIntensityEOverPi) {
   SunLight sun;
   sun.direction = from_angles(35, 60);

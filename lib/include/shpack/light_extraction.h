@@ -29,6 +29,9 @@
 // (for a disc of angular radius a this differs from the flux sum_t e Omega by a factor
 // within cos a of 1). The light is in the map's frame and colours, unscaled: the finish stage
 // (pipeline.h) applies the colour matrix, the intensity and the rotation to it as to the SH.
+//
+// Several compact sources of a map (a sun and lamps, softboxes, windows), each found with the
+// same texel reading, ring level and flux vector, are light_candidates.h's.
 #pragma once
 
 #include <array>
