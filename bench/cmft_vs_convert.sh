@@ -11,8 +11,9 @@
 # writes 25 coefficients (bands 0-4; it has no L2-only mode) to F.c. cmft reads only DDS, KTX,
 # Radiance .hdr and TGA (its --help lists *.exr, but its loader has no EXR reader), so each map
 # is first converted by oiiotool to .hdr, and both tools read that copy (`hdr / hdr`; shpack
-# reads .hdr through its OpenImageIO module). The `exr / hdr` column gives shpack the same
-# pixels re-stored as 32-bit float ZIP EXR (its own OpenEXR reader) against cmft on the .hdr.
+# reads .hdr with its own Radiance reader, lib/io/src/hdr_decoder.h, which loads no OpenImageIO).
+# The `exr / hdr` column gives shpack the same pixels re-stored as 32-bit float ZIP EXR (read
+# with OpenEXR) against cmft on the .hdr.
 #
 # Runs alternate between the commands (cmft, shpack on .hdr, shpack on EXR); each ratio is taken
 # run by run and the median of those ratios printed, for wall time and for CPU time (user +

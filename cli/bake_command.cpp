@@ -91,7 +91,7 @@ CLI::App* add_bake_command(CLI::App& app, BakeCommandOptions& options) {
                   "full: every probe's keys and the effects' costs; unity-probes: flat positions and "
                   "SphericalHarmonicsL2 arrays (default full)");
   cmd->add_option("--window", options.window,
-                  "Deringing per probe: none, hanning:W, lanczos:W, unity or sloan (default none)")
+                  "Deringing per probe: none, hanning:W, lanczos:W, unity, sloan or optimal (default none)")
       ->check([](const std::string& text) {
         Window window;
         const Status st = parse_window(text, window);

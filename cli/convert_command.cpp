@@ -199,7 +199,7 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
                   "Yaw about +Y in degrees, as Skybox/Panoramic's _Rotation (default 0)")
       ->check(finite_number());
   cmd->add_option("--window", options.window,
-                  "Deringing: none, hanning:W, lanczos:W, unity or sloan (default none)")
+                  "Deringing: none, hanning:W, lanczos:W, unity, sloan or optimal (default none)")
       ->check([](const std::string& text) {
         Window window;
         const Status st = parse_window(text, window);

@@ -1,18 +1,19 @@
 // libFuzzer target: lib/io's image readers given arbitrary files (map_source.h, image_file.h):
 // the header paths (open: part, channels, windows, the texel budget) and, for what opens, the
 // decode of the whole image. Files that start with OpenEXR's magic number go to OpenEXR's own
-// reader (lib/io/src/exr_decoder.h, after the header walk of image_open.h), the rest to the
-// OpenImageIO module (beside this executable; tests/fuzz/CMakeLists.txt puts it there). The
-// first byte chooses the file's extension, which OpenImageIO goes by: .exr, .hdr, .pfm or
-// .png; the rest is the file, written to a scratch folder in
-// /dev/shm (no disk). The budget is 2^16 texels, so that nothing a header declares may take
-// more than a few MB; the target runs with -rss_limit_mb=512 (set in LLVMFuzzerInitialize,
-// after any flag on the command line). Properties: no crash, no sanitizer report, no
-// exception out of the readers, no run past the RSS limit or libFuzzer's timeout; a failure
-// is one line that starts with the file's name. (That no reason is ever an empty "()" is
-// tested in tests/io/hostile_inputs_test.cpp: here the messages quote the file's own names
-// and channels, which may hold "()".) Leaks inside libOpenImageIO are suppressed (see
-// __lsan_default_suppressions below).
+// reader (lib/io/src/exr_decoder.h, after the header walk of image_open.h), those that start
+// with a Radiance or PFM magic line to shpack's own readers (hdr_decoder.h, pfm_decoder.h;
+// fuzz_float_maps.cpp reads them in bands too), the rest to the OpenImageIO module (beside
+// this executable; tests/fuzz/CMakeLists.txt puts it there). The first byte chooses the file's
+// extension, which OpenImageIO goes by: .exr, .hdr, .pfm or .png; the rest is the file,
+// written to a scratch folder in /dev/shm (no disk). The budget is 2^16 texels, so that
+// nothing a header declares may take more than a few MB; the target runs with
+// -rss_limit_mb=512 (set in LLVMFuzzerInitialize, after any flag on the command line).
+// Properties: no crash, no sanitizer report, no exception out of the readers, no run past the
+// RSS limit or libFuzzer's timeout; a failure is one line that starts with the file's name.
+// (That no reason is ever an empty "()" is tested in tests/io/hostile_inputs_test.cpp: here
+// the messages quote the file's own names and channels, which may hold "()".) Leaks inside
+// libOpenImageIO are suppressed (see __lsan_default_suppressions below).
 #include <fcntl.h>
 #include <unistd.h>
 

@@ -4,9 +4,12 @@
 // orders, zeros and exact repeats included), or raw doubles (NaN, Inf, denormals, 1e308).
 // Properties, for the first kind: the minimum is attained at its unit direction, is not
 // above the function at 26 probe directions (axes, face and corner diagonals), up to
-// rounding, 64 u sum |s_i| (|P_i| <= 2); every window keeps L00; after sloan each channel not
-// reported impossible has a minimum >= 0, and a channel is impossible only if L00 < 0. For
-// raw doubles: no crash, no sanitizer report, bounded time. parse_window: whatever it
+// rounding, 64 u sum |s_i| (|P_i| <= 2); every per-band window keeps L00; after sloan and
+// optimal each channel not reported impossible has a minimum >= 0, and a channel is
+// impossible exactly when it rings with L00 < 0; optimal leaves a channel that does not ring
+// bit for bit, ends within its plane cap, and is no farther in RMS than E/pi = 0 (nor than
+// sloan's result) beyond its tolerance. For raw doubles: no crash, no sanitizer report,
+// bounded time (the cutting-plane loop is capped). parse_window: whatever it
 // accepts, window_name prints back to the same window.
 #include <array>
 #include <cmath>
@@ -24,6 +27,12 @@
 namespace {
 
 constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
+
+// Optimal's RMS change (window.h: over the RMS before) is no larger than sloan's, beyond
+// optimal's tolerance (1e-9 of the RMS before) and rounding of the two ratios.
+bool no_farther(const shpack::WindowResult& optimal, const shpack::WindowResult& sloan, int c) {
+  return optimal.rms_change[c] <= sloan.rms_change[c] + 1e-9 + 1e-14;
+}
 
 struct Reader {
   const std::uint8_t* data;
@@ -70,9 +79,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (auto& channel : sh.c)
     for (double& s : channel) s = raw ? in.raw() : in.scaled();
 
-  shpack::Window windows[5];
-  const char* names[5] = {"none", "hanning:2.5", "lanczos:3", "unity", "sloan"};
-  for (int k = 0; k < 5; ++k)
+  shpack::Window windows[6];
+  const char* names[6] = {"none", "hanning:2.5", "lanczos:3", "unity", "sloan", "optimal"};
+  for (int k = 0; k < 6; ++k)
     if (!shpack::parse_window(names[k], windows[k]).ok()) std::abort();
 
   for (int c = 0; c < shpack::kChannelCount; ++c) {
@@ -95,17 +104,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           if (!(m.value <= shpack::eval_unity_form(sh, c, f * x, f * y, f * z) + tol)) std::abort();
         }
   }
+  shpack::WindowResult sloan;
   for (const shpack::Window& w : windows) {
     shpack::ShL2 out;
     shpack::WindowResult result;
     if (!shpack::apply_window(sh, w, out, &result).ok()) std::abort();
     if (raw) continue;
+    const bool optimal = w.kind == shpack::WindowKind::Optimal;
     for (int c = 0; c < shpack::kChannelCount; ++c) {
-      if (out.c[c][0] != sh.c[c][0]) std::abort();
-      if (w.kind != shpack::WindowKind::Sloan) continue;
-      if (result.impossible[c] != (sh.c[c][0] < 0 && shpack::minimum_on_sphere(sh, c).value < 0)) std::abort();
+      const double before = shpack::minimum_on_sphere(sh, c).value;
+      if (!optimal && out.c[c][0] != sh.c[c][0]) std::abort();
+      if (w.kind != shpack::WindowKind::Sloan && !optimal) continue;
+      if (result.impossible[c] != (sh.c[c][0] < 0 && before < 0)) std::abort();
       if (!result.impossible[c] && !(shpack::minimum_on_sphere(out, c).value >= 0)) std::abort();
+      if (!optimal) continue;
+      if (before >= 0 && out.c[c] != sh.c[c]) std::abort();
+      if (result.planes[c] > 64 || !(result.rms_change[c] <= 1 + 1e-9 + 1e-14)) std::abort();
+      if (!result.impossible[c] && !no_farther(result, sloan, c)) std::abort();
     }
+    if (w.kind == shpack::WindowKind::Sloan) sloan = result;
   }
   return 0;
 }

@@ -310,10 +310,12 @@ TEST(HostileInputs, PermissionDeniedIsSaid) {
 
 TEST(HostileInputs, AReadErrorWithoutAReasonPrintsNoEmptyParentheses) {
   ScratchDir dir;
-  write_text(dir / "short.pfm", std::string("Pf\n4 2\n-1.0\n") + std::string(8, '\0'));  // 8 of 32 bytes
-  const CliResult run = shpack(dir, {"convert", "short.pfm"});
+  // Two flat scanlines of 4 texels need 32 bytes: 8 pass the header's check (4 a scanline),
+  // and the read fails in the first scanline.
+  write_text(dir / "short.hdr", std::string("#?RADIANCE\n\n-Y 2 +X 4\n") + std::string(8, '\x80'));
+  const CliResult run = shpack(dir, {"convert", "short.hdr"});
   EXPECT_EQ(run.exit_code, 1);
-  EXPECT_EQ(run.err.rfind("shpack: short.pfm: cannot read rows 0..1", 0), 0u) << run.err;
+  EXPECT_EQ(run.err.rfind("shpack: short.hdr: cannot read rows 0..1", 0), 0u) << run.err;
   EXPECT_EQ(run.err.find("()"), std::string::npos) << run.err;
   EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << run.err;
 }

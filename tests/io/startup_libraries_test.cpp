@@ -1,6 +1,7 @@
 // Which shared libraries the shpack command loads (lib/io/src/oiio_plugin.h): --help,
 // convert of an OpenEXR file and eval never load libOpenImageIO (nor the libraries Debian's
-// build of it links); a format only OpenImageIO reads loads shpack's module on first use,
+// build of it links; for .hdr and PFM see hdr_reader_test.cpp); a format only OpenImageIO
+// reads (TIFF here) loads shpack's module on first use,
 // and without the module that is one line naming where it was looked for. The dynamic
 // linker says what it loaded (LD_DEBUG=libs, into files of a scratch folder).
 #include <gtest/gtest.h>
@@ -65,8 +66,8 @@ TEST(StartupLibraries, HelpConvertOfExrAndEvalNeverLoadOpenImageIO) {
 
 TEST(StartupLibraries, OtherFormatsLoadTheModuleOnFirstUse) {
   const ScratchDir dir;
-  ASSERT_TRUE(shpack_io_test::write_constant_image(dir / "sky.hdr", 8, 4, {1.0f, 2.0f, 3.0f}));
-  const TracedRun convert = run_traced(dir, SHPACK_CLI_PATH, "convert sky.hdr -o sky.json");
+  ASSERT_TRUE(shpack_io_test::write_constant_image(dir / "sky.tif", 8, 4, {1.0f, 2.0f, 3.0f}));
+  const TracedRun convert = run_traced(dir, SHPACK_CLI_PATH, "convert sky.tif -o sky.json");
   EXPECT_EQ(convert.exit_code, 0) << convert.err;
   EXPECT_TRUE(loads(convert, "libshpack_oiio"));
   EXPECT_TRUE(loads(convert, "libOpenImageIO"));
@@ -78,12 +79,12 @@ TEST(StartupLibraries, WithoutTheModuleOnlyOtherFormatsFailInOneLine) {
   const fs::path cli = dir / "bin" / "shpack";
   fs::create_directories(cli.parent_path());
   fs::copy_file(SHPACK_CLI_PATH, cli);
-  ASSERT_TRUE(shpack_io_test::write_constant_image(dir / "sky.hdr", 8, 4, {1.0f, 2.0f, 3.0f}));
-  const TracedRun hdr = run_traced(dir, cli, "convert sky.hdr -o sky.json");
-  EXPECT_EQ(hdr.exit_code, 1);
+  ASSERT_TRUE(shpack_io_test::write_constant_image(dir / "sky.tif", 8, 4, {1.0f, 2.0f, 3.0f}));
+  const TracedRun tif = run_traced(dir, cli, "convert sky.tif -o sky.json");
+  EXPECT_EQ(tif.exit_code, 1);
   const fs::path lib = (cli.parent_path() / SHPACK_PLUGIN_RELDIR).lexically_normal();
-  EXPECT_EQ(hdr.err, "shpack: sky.hdr: formats other than OpenEXR are read through OpenImageIO: shpack's "
-                     "OpenImageIO module libshpack_oiio.so is in neither " +
+  EXPECT_EQ(tif.err, "shpack: sky.tif: formats other than OpenEXR, Radiance .hdr and PFM are read through "
+                     "OpenImageIO: shpack's OpenImageIO module libshpack_oiio.so is in neither " +
                          cli.parent_path().string() + " nor " + lib.string() + "\n");
   EXPECT_FALSE(fs::exists(dir / "sky.json"));
   const TracedRun exr = run_traced(dir, cli, "convert '" + shpack_io_test::hdri("studio.exr").string() + "' -o sky.json");

@@ -1,8 +1,9 @@
 // window_test.cpp - deringing windows (window.h): the factors of hanning, lanczos and unity
 // against their formulas, parse_window's accepted and rejected texts, L00 kept by every
-// window, and sloan: non-negative E/pi after it, as little windowing as its bisection
-// allows (a slightly wider window of its family rings again), no change to a channel that
-// does not ring, "impossible" exactly when L00 < 0.
+// per-band window, and sloan: non-negative E/pi after it, as little windowing as its
+// bisection allows (a slightly wider window of its family rings again), no change to a
+// channel that does not ring, "impossible" exactly when L00 < 0. Optimal, which is no
+// per-band window: window_optimal_test.cpp.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -73,7 +74,8 @@ TEST(Window, ParseAcceptsExactlyTheDocumentedForms) {
     double width;
   };
   const Good good[] = {{"none", WindowKind::None, 0},          {"unity", WindowKind::Unity, 0},
-                       {"sloan", WindowKind::Sloan, 0},        {"hanning:3", WindowKind::Hanning, 3},
+                       {"sloan", WindowKind::Sloan, 0},        {"optimal", WindowKind::Optimal, 0},
+                       {"hanning:3", WindowKind::Hanning, 3},
                        {"hanning:2.5", WindowKind::Hanning, 2.5}, {"lanczos:0.5", WindowKind::Lanczos, 0.5},
                        {"lanczos:1e3", WindowKind::Lanczos, 1e3}, {"hanning:1e-300", WindowKind::Hanning, 1e-300}};
   for (const Good& g : good) {
@@ -91,7 +93,8 @@ TEST(Window, ParseAcceptsExactlyTheDocumentedForms) {
   const std::string bad[] = {"",           "Hanning:3",  "HANNING:3",  "hanning",    "hanning:",    "hanning:0",
                              "hanning:-1", "hanning:nan", "hanning:inf", "hanning:1e999", "hanning:3x", "hanning: 3",
                              " hanning:3", "hanning:3 ", "hanning:3:4", "hanning:0x10", "lanczos",    "unity:1",
-                             "sloan:2",    "none:",      "hann:3",     "gauss:2",    std::string("none\0", 5), "none,"};
+                             "sloan:2",    "none:",      "hann:3",     "gauss:2",    std::string("none\0", 5), "none,",
+                             "optimal:1",  "Optimal",    "optimal "};
   for (const std::string& text : bad) {
     Window w{WindowKind::Lanczos, 7};
     EXPECT_EQ(shpack::parse_window(text, w).code, shpack::Errc::InvalidArgument) << "'" << text << "'";

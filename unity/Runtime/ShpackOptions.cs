@@ -28,7 +28,7 @@ namespace Shpack
         public double Intensity = 1.0;   // linear factor on the radiance
         public double ExposureEv;        // the radiance times Intensity * 2^ExposureEv
         public double RotateDeg;         // yaw about +Y, as Skybox/Panoramic's _Rotation
-        public string Window = "none";   // "none", "hanning:W", "lanczos:W", "unity", "sloan"
+        public string Window = "none";   // "none", "hanning:W", "lanczos:W", "unity", "sloan", "optimal"
         public bool ExtractSun;          // take the sun out of an equirect map as a light
         public bool L1;                  // band 2 removed, for Light Probe Proxy Volumes
         public ShpackCubeFrame CubeFrame = ShpackCubeFrame.Unity;  // cube layouts only

@@ -94,14 +94,14 @@ typedef struct shpack_options {
   uint32_t threads;    /* worker threads, 0 = all cores; the result does not depend on it */
   double intensity;    /* linear factor on the radiance, finite and >= 0 */
   double rotate_deg;   /* yaw about +Y, the sense and number of Skybox/Panoramic's _Rotation */
-  const char* window;  /* "none", "hanning:W", "lanczos:W", "unity", "sloan"; NULL = "none" */
+  const char* window;  /* "none", "hanning:W", "lanczos:W", "unity", "sloan", "optimal"; NULL = "none" */
 } shpack_options;
 
 typedef struct shpack_result {
   double radiance_sh[27];    /* L_c,i with intensity, rotation and window applied */
   double min_e_over_pi[3];   /* exact minimum over the sphere of E/pi, per channel */
   double min_direction[9];   /* where it is attained, (x, y, z) per channel, Unity's frame */
-  double window_factors[9];  /* per channel, the factors applied to bands 0, 1, 2 */
+  double window_factors[9];  /* per channel, the factors applied to bands 0, 1, 2; NaN for "optimal" (none) */
   uint64_t nonfinite_texels; /* texels with a NaN/Inf channel (counted as 0 under ZERO) */
   uint64_t negative_texels;  /* texels with a negative channel */
   float unity_sh[27];        /* SphericalHarmonicsL2 sh[c, i] */

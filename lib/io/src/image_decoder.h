@@ -1,8 +1,9 @@
 // image_decoder.h (private) - what a format's reader hands to ImageSource (image_source.h):
 // the parts of one image file as their headers declare them, and the data rows of a part as
-// float. Two readers implement it: OpenEXR's (exr_decoder.h, linked into lib/io) and
-// OpenImageIO's for every other format (lib/io/oiio, a module opened on first use:
-// oiio_plugin.h). Neither chooses channels or windows: ImageSource does, once, for both.
+// float. Four readers implement it: OpenEXR's (exr_decoder.h), shpack's own Radiance .hdr
+// and PFM readers (hdr_decoder.h, pfm_decoder.h), all linked into lib/io, and OpenImageIO's
+// for every other format (lib/io/oiio, a module opened on first use: oiio_plugin.h). None
+// chooses channels or windows: ImageSource does, once, for all.
 #pragma once
 
 #include <array>

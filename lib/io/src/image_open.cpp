@@ -1,62 +1,41 @@
 #include "image_open.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <cstring>
+#include <string_view>
+#include <utility>
 
 #include "exr_decoder.h"
+#include "file_bytes.h"
+#include "hdr_decoder.h"
 #include "oiio_plugin.h"
+#include "pfm_decoder.h"
 #include "shpack/io/file_checks.h"
 
 namespace shpack::io::detail {
 namespace {
 
-// Whether the readable file `path` starts with OpenEXR's magic number.
-bool is_openexr(const std::filesystem::path& path) {
-  static constexpr std::array<unsigned char, 4> kExr = {0x76, 0x2f, 0x31, 0x01};
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
-  if (fd < 0) return false;
-  std::array<unsigned char, 4> head{};
-  const ssize_t got = ::read(fd, head.data(), head.size());
-  ::close(fd);
-  return got == static_cast<ssize_t>(head.size()) && head == kExr;
+constexpr std::size_t kMagicBytes = 16;  // enough for every magic number below
+
+// Whether a file's first bytes are OpenEXR's magic number.
+bool is_openexr(std::string_view head) {
+  static constexpr std::string_view kExr("\x76\x2f\x31\x01", 4);
+  return head.substr(0, kExr.size()) == kExr;
 }
 
-// Reads a file through pread, for walking a header without holding it.
-struct FileBytes {
-  int fd = -1;
-  std::uint64_t size = 0;
-  bool read(std::uint64_t at, void* out, std::size_t n) const {
-    if (at > size || n > size - at) return false;
-    auto* p = static_cast<char*>(out);
-    while (n > 0) {
-      const ssize_t got = ::pread(fd, p, n, static_cast<off_t>(at));
-      if (got < 0 && errno == EINTR) continue;
-      if (got <= 0) return false;
-      p += got;
-      at += static_cast<std::uint64_t>(got);
-      n -= static_cast<std::size_t>(got);
-    }
-    return true;
+// A name at `at` as OpenEXR reads it: at most `max` bytes and a NUL; `at` moves past it.
+// False at the end of the file or without the NUL (OpenEXR refuses the file then).
+bool read_name(const FileBytes& file, std::uint64_t& at, std::size_t max, std::string& out) {
+  out.clear();
+  for (char ch = 0; out.size() <= max;) {
+    if (!file.read(at, &ch, 1)) return false;
+    ++at;
+    if (ch == '\0') return true;
+    out += ch;
   }
-  // A name at `at` as OpenEXR reads it: at most `max` bytes and a NUL; `at` moves past it.
-  // False at the end of the file or without the NUL (OpenEXR refuses the file then).
-  bool name(std::uint64_t& at, std::size_t max, std::string& out) const {
-    out.clear();
-    for (char ch = 0; out.size() <= max;) {
-      if (!read(at, &ch, 1)) return false;
-      ++at;
-      if (ch == '\0') return true;
-      out += ch;
-    }
-    return false;  // not NUL-terminated: OpenEXR refuses it
-  }
-};
+  return false;  // not NUL-terminated: OpenEXR refuses it
+}
 
 std::int32_t little_i32(const unsigned char* b) {
   const std::uint32_t u = std::uint32_t{b[0]} | std::uint32_t{b[1]} << 8 | std::uint32_t{b[2]} << 16 |
@@ -90,12 +69,7 @@ std::uint64_t exr_fixed_size(const std::string& type) {
 
 // The problem with an OpenEXR header that would make OpenEXR allocate more than the file or
 // the budget allows, or "" (also for what is merely malformed: OpenEXR says that).
-std::string exr_header_problem(const std::filesystem::path& path, const TexelBudget& budget) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
-  if (fd < 0) return {};
-  struct stat st {};
-  FileBytes file{fd, 0};
-  if (::fstat(fd, &st) == 0) file.size = static_cast<std::uint64_t>(st.st_size);
+std::string exr_header_problem(const FileBytes& file, const TexelBudget& budget) {
   std::string problem;
   std::array<unsigned char, 8> head{};
   if (file.read(0, head.data(), head.size())) {
@@ -112,14 +86,14 @@ std::string exr_header_problem(const std::filesystem::path& path, const TexelBud
       std::string name, type;
       bool any = false;
       for (;;) {
-        if (!file.name(at, max_name, name)) return ::close(fd), std::string();
+        if (!read_name(file, at, max_name, name)) return std::string();
         if (name.empty()) break;
         any = true;
         unsigned char size_bytes[4];
-        if (!file.name(at, max_name, type) || !file.read(at, size_bytes, 4)) return ::close(fd), std::string();
+        if (!read_name(file, at, max_name, type) || !file.read(at, size_bytes, 4)) return std::string();
         at += 4;
         const std::int32_t size = little_i32(size_bytes);
-        if (size < 0) return ::close(fd), std::string();  // OpenEXR refuses it
+        if (size < 0) return std::string();  // OpenEXR refuses it
         // OpenEXR reads a value of a known fixed-size type by its type, whatever `size` says;
         // the others (strings, vectors, opaque) by `size`.
         std::uint64_t length = static_cast<std::uint64_t>(size);
@@ -128,24 +102,24 @@ std::string exr_header_problem(const std::filesystem::path& path, const TexelBud
         } else if (type == "chlist") {  // entries "name\0" + 16 bytes, until an empty name
           std::uint64_t p = at;
           for (std::string channel;;) {
-            if (!file.name(p, max_name, channel)) return ::close(fd), std::string();
+            if (!read_name(file, p, max_name, channel)) return std::string();
             if (channel.empty()) break;
             p += 16;
           }
           length = p - at;
         } else if (type == "preview") {  // width, height, then 4 bytes a texel
           unsigned char wh[8];
-          if (!file.read(at, wh, 8)) return ::close(fd), std::string();
+          if (!file.read(at, wh, 8)) return std::string();
           const std::uint64_t texels = std::uint64_t{static_cast<std::uint32_t>(little_i32(wh))} *
                                        static_cast<std::uint32_t>(little_i32(wh + 4));
-          if (texels > (file.size - at) / 4) {
+          if (texels > (file.size() - at) / 4) {
             problem = "the header's preview image declares " + std::to_string(texels) +
                       " texels, more than the file holds";
             break;
           }
           length = 8 + 4 * texels;
         }
-        if (length > file.size - at) {
+        if (length > file.size() - at) {
           problem = "the header's attribute '" + name.substr(0, 64) + "' declares " + std::to_string(length) +
                     " bytes, more than the file holds";
           break;
@@ -183,15 +157,14 @@ std::string exr_header_problem(const std::filesystem::path& path, const TexelBud
             tiled && tile_w > 0 && tile_h > 0
                 ? ((static_cast<std::uint64_t>(dw) + tile_w - 1) / tile_w) * ((static_cast<std::uint64_t>(dh) + tile_h - 1) / tile_h)
                 : (static_cast<std::uint64_t>(dh) + exr_lines_per_chunk(compression) - 1) / exr_lines_per_chunk(compression);
-        if (chunks > file.size / 8)
+        if (chunks > file.size() / 8)
           problem = "the header declares " + std::to_string(chunks) + " chunks, more than the file of " +
-                    std::to_string(file.size) + " bytes can hold";
+                    std::to_string(file.size()) + " bytes can hold";
       }
       if (!multipart) break;
       if (part > 10000) break;
     }
   }
-  ::close(fd);
   return problem;
 }
 
@@ -217,16 +190,24 @@ IoStatus open_image(const std::filesystem::path& path, const TexelBudget& budget
                     std::unique_ptr<ImageDecoder>& decoder) {
   decoder.reset();
   if (IoStatus st = check_readable_file(path); !st.ok()) return st;
+  FileBytes file;
+  if (const int error = file.open(path); error != 0) return file_error(path, error);
+  const std::string head = file.read_some(0, kMagicBytes);
+  if (is_radiance_magic(head)) return open_hdr(path, std::move(file), budget, decoder);
+  if (is_pfm_magic(head)) return open_pfm(path, std::move(file), budget, decoder);
   std::string reason;
-  if (is_openexr(path)) {
-    if (const std::string problem = exr_header_problem(path, budget); !problem.empty())
+  if (is_openexr(head)) {
+    if (const std::string problem = exr_header_problem(file, budget); !problem.empty())
       return IoStatus::error(IoErrc::Unsupported, path, problem);
     decoder = open_exr(path, reason);
   } else {
     std::string problem;
     const OiioPlugin* plugin = oiio_plugin(problem);
-    if (plugin == nullptr)
-      return IoStatus::error(IoErrc::Unreadable, path, "formats other than OpenEXR are read through OpenImageIO: " + problem);
+    if (plugin == nullptr) {
+      std::string what = "formats other than OpenEXR, Radiance .hdr and PFM are read through OpenImageIO: ";
+      what += problem;
+      return IoStatus::error(IoErrc::Unreadable, path, what);
+    }
     decoder.reset(plugin->open(path.c_str(), &reason));
   }
   if (!decoder) return IoStatus::error(IoErrc::Unreadable, path, with_reason("not an image that can be read", reason));

@@ -22,10 +22,13 @@ struct TexelBudget {
 // or "": "the image is WxH (N texels), above the budget of B (--max-texels)".
 std::string budget_problem(const char* what, long long w, long long h, const TexelBudget& budget);
 
-// Checks that `path` is a regular file this process may read (file_checks.h) and opens it:
-// an OpenEXR file (by its magic number) with OpenEXR (exr_decoder.h), any other through
-// shpack's OpenImageIO module (oiio_plugin.h), which is loaded then and not before. On
-// failure `decoder` is null and the status names the file and the reason.
+// Checks that `path` is a regular file this process may read (file_checks.h) and opens it
+// with the reader its magic number names, never its extension: OpenEXR with OpenEXR
+// (exr_decoder.h), Radiance RGBE and PFM with shpack's own readers (hdr_decoder.h,
+// pfm_decoder.h, which check their headers against the file's size and `budget` as they
+// read them), any other through shpack's OpenImageIO module (oiio_plugin.h), which is loaded
+// then and not before. On failure `decoder` is null and the status names the file and the
+// reason.
 // An OpenEXR file's header is walked first, before OpenEXR reads it (OpenEXR allocates what
 // a header declares): every attribute must fit in the file, every part's data window and
 // display window must be within `budget`, and every part's chunk offset table (8 bytes a

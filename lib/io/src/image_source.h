@@ -7,8 +7,8 @@
 //    Nothing else is taken for colour: a part with some of R, G, B but not all ("it has G,
 //    R"), or with no colour channel at all (only A, Z, ...), fails naming the channels it
 //    has; one whose channels all carry a layer prefix ("diffuse.R") fails listing the
-//    layers. (OpenImageIO names the channels of PNG, HDR, PFM, TIFF, JPEG R, G, B [, A] or
-//    Y [, A].) With a layer NAME: the part (EXR part, OpenImageIO subimage) named NAME, read as above; else the
+//    layers. (The .hdr and PFM readers name their channels R, G, B or Y; OpenImageIO
+//    names those of PNG, TIFF, JPEG R, G, B [, A] or Y [, A].) With a layer NAME: the part (EXR part, OpenImageIO subimage) named NAME, read as above; else the
 //    channels NAME.R, NAME.G, NAME.B (or NAME.Y) of the first subimage that has them.
 //    Anything else fails and lists the file's layers.
 //  - Budget. The display window and the data window, as the header declares them, are each

@@ -69,6 +69,10 @@ std::string to_json(const ShDocument& doc) {
                       {"ignored_channels", doc.reading.ignored_channels}};
   put_sh_diagnostics(doc.sh, diagnostics);
   diagnostics["window_impossible"] = doc.sh.window.impossible;
+  if (!scales_bands(doc.window.kind)) {  // optimal: no factors (null), what it changed instead
+    diagnostics["window_rms_change"] = doc.sh.window.rms_change;
+    diagnostics["window_planes"] = doc.sh.window.planes;
+  }
   j["diagnostics"] = std::move(diagnostics);
   if (doc.sun_extraction) j["sun"] = doc.sun ? sun_json(*doc.sun) : Json(nullptr);  // null: no sun found
   // A file name need not be UTF-8 on Linux: replace bad bytes rather than fail.

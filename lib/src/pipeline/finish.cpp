@@ -17,6 +17,17 @@ void remove_band_2(ShL2& sh) noexcept {
       if (kBand[i] == 2) channel[i] = 0.0;
 }
 
+// The radiance whose Unity form is `fitted` (convolution.h: unity_i = kUnityScale[i]
+// radiance_i), for a window that scales no band (window.h, Optimal). A channel the fit left
+// unchanged keeps its radiance bit for bit.
+ShL2 radiance_of_fit(const ShL2& radiance, const ShL2& unity_form, const ShL2& fitted) noexcept {
+  ShL2 out = radiance;
+  for (int c = 0; c < kChannelCount; ++c)
+    if (fitted.c[c] != unity_form.c[c])
+      for (int i = 0; i < kShCount; ++i) out.c[c][i] = fitted.c[c][i] / kUnityScale[i];
+  return out;
+}
+
 std::array<double, 3> mixed_and_scaled(const std::array<double, 3>& rgb, const FinishOptions& options) noexcept {
   std::array<double, 3> out = rgb;
   if (options.colour_matrix) {
@@ -43,10 +54,10 @@ Status finish_projection(const ShL2& projected_radiance, const FinishOptions& op
   const ShL2 linear = options.colour_matrix ? mix_channels(projected_radiance, *options.colour_matrix)
                                             : projected_radiance;
   const ShL2 radiance = rotate_about_y(scaled(linear, options.intensity), options.rotate_deg);
-  if (Status st = apply_window(radiance_to_unity_form(radiance), options.window, result.unity_form, &result.window);
-      !st.ok())
-    return st;
-  result.radiance = apply_band_factors(radiance, result.window.factors);
+  const ShL2 unity_form = radiance_to_unity_form(radiance);
+  if (Status st = apply_window(unity_form, options.window, result.unity_form, &result.window); !st.ok()) return st;
+  result.radiance = scales_bands(options.window.kind) ? apply_band_factors(radiance, result.window.factors)
+                                                      : radiance_of_fit(radiance, unity_form, result.unity_form);
   if (options.l1) {
     remove_band_2(result.radiance);
     remove_band_2(result.unity_form);

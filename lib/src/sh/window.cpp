@@ -1,10 +1,13 @@
 #include "shpack/window.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numbers>
 
+#include "sh/nonnegative_fit.h"
 #include "shpack/sh_minimum.h"
 
 namespace shpack {
@@ -47,6 +50,35 @@ std::array<double, 3> sloan_channel(const ShL2& sh, int channel, bool& impossibl
   return sloan_factors(lo);
 }
 
+// Optimal (window.h, nonnegative_fit.h) on channel `channel`: `out` holds the input there.
+void optimal_channel(const ShL2& in, int channel, ShL2& out, WindowResult& r) noexcept {
+  for (const double s : in.c[channel])
+    if (!std::isfinite(s)) return;  // nothing to fit; finish_projection's float32 check refuses it
+  if (minimum_on_sphere(in, channel).value >= 0.0) return;
+  if (in.c[channel][0] < 0.0) {
+    r.impossible[channel] = true;
+    return;
+  }
+  const NonnegativeFit fit = nearest_nonnegative(in, channel);
+  out.c[channel] = fit.unity_form;
+  r.planes[channel] = fit.planes;
+}
+
+// The RMS over the sphere of out - in over that of in, from the weights of nonnegative_fit.h
+// (both divided by max |in_i| first, so no square overflows).
+double relative_rms_change(const ShL2& in, const ShL2& out, int channel) noexcept {
+  double largest = 0.0;
+  for (const double s : in.c[channel]) largest = std::max(largest, std::fabs(s));
+  if (!(largest > 0.0) || out.c[channel] == in.c[channel]) return 0.0;
+  double change = 0.0, before = 0.0;
+  for (int i = 0; i < kShCount; ++i) {
+    const double d = (out.c[channel][i] - in.c[channel][i]) / largest, s = in.c[channel][i] / largest;
+    change += rms_weight(i) * d * d;
+    before += rms_weight(i) * s * s;
+  }
+  return std::sqrt(change / before);
+}
+
 }  // namespace
 
 Status parse_window(std::string_view text, Window& window) noexcept {
@@ -56,8 +88,8 @@ Status parse_window(std::string_view text, Window& window) noexcept {
     bool has_width;
   };
   constexpr Named kNames[] = {{"none", WindowKind::None, false},       {"unity", WindowKind::Unity, false},
-                              {"sloan", WindowKind::Sloan, false},     {"hanning", WindowKind::Hanning, true},
-                              {"lanczos", WindowKind::Lanczos, true}};
+                              {"sloan", WindowKind::Sloan, false},     {"optimal", WindowKind::Optimal, false},
+                              {"hanning", WindowKind::Hanning, true},  {"lanczos", WindowKind::Lanczos, true}};
   const std::size_t colon = text.find(':');
   const std::string_view name = text.substr(0, colon);
   for (const Named& n : kNames) {
@@ -77,13 +109,14 @@ Status parse_window(std::string_view text, Window& window) noexcept {
     window = {n.kind, width};
     return Status::success();
   }
-  return Status::error(Errc::InvalidArgument, "unknown window (none, hanning:W, lanczos:W, unity, sloan)");
+  return Status::error(Errc::InvalidArgument, "unknown window (none, hanning:W, lanczos:W, unity, sloan, optimal)");
 }
 
 WindowName window_name(const Window& window) noexcept {
   WindowName out{};
   const char* name = window.kind == WindowKind::Unity     ? "unity"
                      : window.kind == WindowKind::Sloan   ? "sloan"
+                     : window.kind == WindowKind::Optimal ? "optimal"
                      : window.kind == WindowKind::Hanning ? "hanning"
                      : window.kind == WindowKind::Lanczos ? "lanczos"
                                                           : "none";
@@ -117,6 +150,8 @@ Status window_factors(const Window& window, std::array<double, 3>& f) noexcept {
       return Status::success();
     case WindowKind::Sloan:
       return Status::error(Errc::InvalidArgument, "the sloan window depends on the data");
+    case WindowKind::Optimal:
+      return Status::error(Errc::InvalidArgument, "the optimal fit scales no band");
   }
   return Status::error(Errc::InvalidArgument, "unknown window");
 }
@@ -131,14 +166,21 @@ ShL2 apply_band_factors(const ShL2& sh, const std::array<std::array<double, 3>, 
 Status apply_window(const ShL2& unity_form, const Window& window, ShL2& out,
                     WindowResult* result) noexcept {
   WindowResult r;
-  if (window.kind == WindowKind::Sloan) {
+  ShL2 windowed = unity_form;
+  if (window.kind == WindowKind::Optimal) {
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    r.factors = {{{kNaN, kNaN, kNaN}, {kNaN, kNaN, kNaN}, {kNaN, kNaN, kNaN}}};
+    for (int c = 0; c < kChannelCount; ++c) optimal_channel(unity_form, c, windowed, r);
+  } else if (window.kind == WindowKind::Sloan) {
     for (int c = 0; c < kChannelCount; ++c) r.factors[c] = sloan_channel(unity_form, c, r.impossible[c]);
   } else {
     std::array<double, 3> f;
     if (Status st = window_factors(window, f); !st.ok()) return st;
     r.factors = {f, f, f};
   }
-  out = apply_band_factors(unity_form, r.factors);
+  if (scales_bands(window.kind)) windowed = apply_band_factors(unity_form, r.factors);
+  for (int c = 0; c < kChannelCount; ++c) r.rms_change[c] = relative_rms_change(unity_form, windowed, c);
+  out = windowed;
   if (result != nullptr) *result = r;
   return Status::success();
 }

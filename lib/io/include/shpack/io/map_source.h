@@ -2,9 +2,10 @@
 // environment map file (or of six face files) are read, and how, resolved once when the
 // source is opened; then the pixels, in bands of rows or whole, as the later stages need.
 //
-// OpenEXR files are read with OpenEXR itself; every other format (Radiance .hdr, PFM, TIFF,
-// PNG, JPEG, and anything else OpenImageIO reads) through shpack's OpenImageIO module, which
-// is loaded for the first such file (lib/io/src/image_open.h). What is resolved at open():
+// OpenEXR files are read with OpenEXR itself, Radiance .hdr and PFM with shpack's own readers;
+// every other format (TIFF, PNG, JPEG, and anything else OpenImageIO reads) through shpack's
+// OpenImageIO module, which is loaded for the first such file. The reader is chosen by the
+// file's magic number (lib/io/src/image_open.h). What is resolved at open():
 //  - part and channels: R, G, B by name, or Y (grey, which the core replicates to R, G, B),
 //    of the part or layer SourceOptions::layer names; files without layered names give their
 //    first three channels (or their first, if fewer); channels not read are counted in
@@ -66,7 +67,7 @@ struct SourceInfo {
   std::uint32_t ignored_channels = 0;   // channels not projected: alpha and any after R, G, B
   Layout layout = Layout::Auto;         // never Auto once open
   bool srgb_decoded = false;            // integer sRGB pixels were linearised
-  std::string format;                   // the format's name, as OpenImageIO names it: "openexr", "hdr", "png", ...
+  std::string format;                   // the format's name, as OpenImageIO names it: "openexr", "hdr", "pnm" (PFM), "png", ...
   ColourResolution colour;              // the input's primaries and the matrix to Rec. 709
 };
 
