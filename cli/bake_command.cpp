@@ -84,20 +84,22 @@ void warn_capped_probes(const scene::Scene& scene, const bake::BakeResult& resul
 
 CLI::App* add_bake_command(CLI::App& app, BakeCommandOptions& options) {
   CLI::App* cmd = app.add_subcommand("bake", "Bake a scene (lights, environment, effects) into one SH per probe");
-  cmd->add_option("scene", options.scene, "The scene file (docs/scenes.md)")->required();
-  cmd->add_option("-o,--output", options.output, "Output JSON file; - for stdout (default: stdout)");
+  cmd->add_option("scene", options.scene, "The scene file (docs/scenes.md)")->type_name("FILE")->required();
+  cmd->add_option("-o,--output", options.output, "Output JSON file; - for stdout (default: stdout)")->type_name("FILE");
   add_enum_option(*cmd, "--format", options.format,
                   {{"full", bake::BakeFormat::Full}, {"unity-probes", bake::BakeFormat::UnityProbes}},
                   "full: every probe's keys and the effects' costs; unity-probes: flat positions and "
                   "SphericalHarmonicsL2 arrays (default full)");
   cmd->add_option("--window", options.window,
                   "Deringing per probe: none, hanning:W, lanczos:W, unity, sloan or optimal (default none)")
+      ->type_name("W")
       ->check([](const std::string& text) {
         Window window;
         const Status st = parse_window(text, window);
         return st.ok() ? std::string() : std::string(st.what);
       });
   cmd->add_option("--threads", options.threads, "Worker threads (default 0: all cores; at most the cores)")
+      ->type_name("N")
       ->check(unsigned_integer());
   cmd->add_flag("--quiet", options.quiet, "No progress bar on stderr");
   return cmd;
@@ -115,7 +117,7 @@ int run_bake(const BakeCommandOptions& options) {
   }
   // The output is none of the files read: the scene, its map, its meshes (before the bake).
   if (const std::string problem = check_output_not_input(options.output, scene_input_files(scene)); !problem.empty()) {
-    report_error(problem);
+    report_usage_error("bake", problem);
     return kExitUsage;
   }
   bake::BakeOptions bake_options;

@@ -84,29 +84,37 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& options) {
                   "Equirect maps, or synthetic:band-limited|texel|sun|gradient, or scenes (SCENE.json: each "
                   "Monte Carlo effect of `shpack bake` against a reference of the scene) "
                   "(default: $SHPACK_DATA_DIR/*.exr, else the installed <prefix>/share/shpack/hdri/*.exr; "
-                  "then the synthetic maps)");
+                  "then the synthetic maps)")
+      ->type_name("FILE");
   cmd->add_option("--methods", options.methods,
                   "Comma-separated: a name (mc) runs its sweep, a spec (mc:4096) one run "
                   "(default: every method)")
+      ->type_name("LIST")
       ->check([](const std::string& text) {
         std::vector<MethodSpec> specs;
         const Status st = study::parse_method_list(text, false, kDefaultMethodSeed, specs);
         return st.ok() ? std::string() : "'" + text + "': " + st.what;
       });
-  cmd->add_option("--repeats", options.repeats, "Timed runs of each (default 5)")
-      ->check(unsigned_integer() & CLI::Range(1u, 1000000u));
+  cmd->add_option("--repeats", options.repeats, "Timed runs of each, 1 to 1000000 (default 5)")
+      ->type_name("N")
+      ->check(unsigned_in(1, 1000000));
   cmd->add_option("--seeds", options.seeds,
                   "Draws of each random method (mc, qmc, is), seeds SEED, SEED+1, ...: errors are their RMS "
-                  "with the 10th and 90th percentiles (default 16)")
-      ->check(unsigned_integer() & CLI::Range(1u, 1000000u));
+                  "with the 10th and 90th percentiles; 1 to 1000000 (default 16)")
+      ->type_name("N")
+      ->check(unsigned_in(1, 1000000));
   cmd->add_option("--threads", options.threads,
                   "Threads for exact, center and mip; the others use one (default 1; 0: all cores)")
+      ->type_name("N")
       ->check(unsigned_integer());
   cmd->add_option("--seed", options.seed,
                   "Seed of mc, qmc and is (default " + std::to_string(kDefaultMethodSeed) + ")")
+      ->type_name("N")
       ->check(unsigned_integer());
-  cmd->add_option("--scene-seeds", options.scene_seeds, "Bakes of a scene per sample count and estimator (default 4)")
-      ->check(unsigned_integer() & CLI::Range(1u, 1000u));
+  cmd->add_option("--scene-seeds", options.scene_seeds,
+                  "Bakes of a scene per sample count and estimator, 1 to 1000 (default 4)")
+      ->type_name("N")
+      ->check(unsigned_in(1, 1000));
   cmd->add_flag("--quick", options.quick, "Three parameters per method instead of six or seven");
   cmd->add_flag("--json", options.json, "Print a JSON array, one record per run, instead of markdown");
   cmd->add_option("--plot", options.plot, "Also draw error against time into PREFIX.png and PREFIX.svg")
@@ -118,7 +126,7 @@ int run_bench(const BenchOptions& options) {
   if (!options.inputs.empty() && std::all_of(options.inputs.begin(), options.inputs.end(), is_scene))
     return run_scene_bench(options.inputs, options);
   if (std::any_of(options.inputs.begin(), options.inputs.end(), is_scene)) {
-    report_error("bench: give scenes (.json) or maps, not both in one run");
+    report_usage_error("bench", "bench: give scenes (.json) or maps, not both in one run");
     return kExitUsage;
   }
   std::vector<MethodSpec> specs = study::full_sweep(options.quick, options.seed);

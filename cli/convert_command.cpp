@@ -144,16 +144,19 @@ Plan plan_outputs(const ConvertOptions& options) {
 CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
   CLI::App* cmd = app.add_subcommand("convert", "Environment maps to Unity L2 SH (JSON)");
   CLI::Option* inputs =
-      cmd->add_option("inputs", options.inputs, "Environment map files (EXR, HDR, PFM, PNG, ...)");
+      cmd->add_option("inputs", options.inputs, "Environment map files (EXR, HDR, PFM, PNG, ...)")->type_name("FILE");
   // 1 to 6 values for CLI11; plan_outputs refuses any count but six files or one pattern.
   cmd->add_option("--faces", options.faces,
                   "Six cube face files in Unity's order: +X -X +Y -Y +Z -Z (instead of inputs); "
                   "or one pattern with {face}, which becomes px nx py ny pz nz in that order")
       ->expected(1, static_cast<int>(kFaceNames.size()))
+      ->type_name("FILE")
       ->excludes(inputs);
   CLI::Option* output = cmd->add_option("-o,--output", options.output,
-                                        "Output JSON file; - for stdout (default: stdout)");
+                                        "Output JSON file; - for stdout (default: stdout)")
+                              ->type_name("FILE");
   cmd->add_option("--out-dir", options.out_dir, "Write DIR/<stem>.json for each input")
+      ->type_name("DIR")
       ->excludes(output);
   add_enum_option(*cmd, "--layout", options.layout,
                   {{"auto", Layout::Auto}, {"equirect", Layout::Equirect},
@@ -166,7 +169,8 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
   add_enum_option(*cmd, "--cube-frame", options.cube_frame,
                   {{"unity", CubeFrame::Unity}, {"gl", CubeFrame::Gl}, {"threejs", CubeFrame::ThreeJs}},
                   "World the cube faces were made in: unity, gl (z mirrored), threejs (default unity)");
-  cmd->add_option("--layer", options.layer, "EXR part or channel layer to read (e.g. diffuse for diffuse.R/G/B)");
+  cmd->add_option("--layer", options.layer, "EXR part or channel layer to read (e.g. diffuse for diffuse.R/G/B)")
+      ->type_name("NAME");
   add_enum_option(*cmd, "--colorspace", options.colorspace,
                   {{"auto", ColorSpace::Auto}, {"linear-rec709", ColorSpace::LinearRec709},
                    {"acescg", ColorSpace::AcesCg}, {"aces2065-1", ColorSpace::Aces2065_1},
@@ -175,6 +179,7 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
   cmd->add_option("--method", options.method,
                   "exact, center, mip:K, mc:N, qmc:N, fib:N, is:N, riemann:N, cube:N, "
                   "cube-exact:N or lsq:N (default exact)")
+      ->type_name("METHOD")
       ->check([](const std::string& text) {
         MethodSpec spec;
         const Status st = parse_method(text, spec);
@@ -184,6 +189,7 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
       "--seed", [&options](std::uint64_t seed) { options.seed = seed; },
       "Seed of the random methods mc, qmc and is; the others ignore it (default " +
           std::to_string(kDefaultMethodSeed) + ")")
+      ->type_name("N")
       ->check(unsigned_integer());
   add_enum_option(*cmd, "--nonfinite", options.nonfinite,
                   {{"error", NonFinite::Error}, {"zero", NonFinite::Zero}},
@@ -191,15 +197,19 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
   add_enum_option(*cmd, "--negative", options.negative,
                   {{"keep", Negative::Keep}, {"clamp", Negative::Clamp}},
                   "Negative texels: keep them, or count them as 0 (default keep)");
-  cmd->add_option("--intensity", options.intensity, "Multiply the radiance by K (default 1)")
+  cmd->add_option("--intensity", options.intensity, "Multiply the radiance by K, a number >= 0 (default 1)")
+      ->type_name("K")
       ->check(non_negative_finite_number());
   cmd->add_option("--exposure", options.exposure, "Multiply the radiance by 2^EV (default 0)")
+      ->type_name("EV")
       ->check(finite_number());
   cmd->add_option("--rotate", options.rotate_deg,
                   "Yaw about +Y in degrees, as Skybox/Panoramic's _Rotation (default 0)")
+      ->type_name("DEG")
       ->check(finite_number());
   cmd->add_option("--window", options.window,
                   "Deringing: none, hanning:W, lanczos:W, unity, sloan or optimal (default none)")
+      ->type_name("W")
       ->check([](const std::string& text) {
         Window window;
         const Status st = parse_window(text, window);
@@ -207,10 +217,11 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
       });
   cmd->add_option("--max-texels", options.max_texels,
                   "Refuse a map whose header declares more than N texels (display or data window; "
-                  "six faces together), before reading it (default " + std::to_string(io::kDefaultMaxTexels) + ")")
-      ->check(unsigned_integer())
-      ->check(CLI::Range(std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max()));
+                  "six faces together), before reading it; N >= 1 (default " + std::to_string(io::kDefaultMaxTexels) + ")")
+      ->type_name("N")
+      ->check(unsigned_in(1, std::numeric_limits<std::uint64_t>::max()));
   cmd->add_option("--threads", options.threads, "Worker threads (default 0: all cores)")
+      ->type_name("N")
       ->check(unsigned_integer());
   add_enum_option(*cmd, "--format", options.format,
                   {{"json", io::OutputFormat::Json}, {"csharp", io::OutputFormat::CSharp},
@@ -225,12 +236,12 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
 int run_convert(const ConvertOptions& options) {
   const double factor = options.intensity * std::exp2(options.exposure);
   if (!std::isfinite(factor)) {
-    report_error("convert: --intensity times 2^--exposure is not a finite number");
+    report_usage_error("convert", "convert: --intensity times 2^--exposure is not a finite number");
     return kExitUsage;
   }
   const Plan plan = plan_outputs(options);
   if (!plan.problem.empty()) {
-    report_error(plan.problem);
+    report_usage_error("convert", plan.problem);
     return kExitUsage;
   }
   if (!options.out_dir.empty()) {
@@ -249,7 +260,7 @@ int run_convert(const ConvertOptions& options) {
   if (options.seed) {
     // "mc:N:SEED" and --seed both name a seed; taking either silently could surprise.
     if (options.method.find(':') != options.method.rfind(':')) {
-      report_error("convert: give the seed once, in --method or with --seed");
+      report_usage_error("convert", "convert: give the seed once, in --method or with --seed");
       return kExitUsage;
     }
     convert.method.seed = *options.seed;
@@ -263,7 +274,7 @@ int run_convert(const ConvertOptions& options) {
   convert.finish.l1 = options.l1;
   if (!plan.faces.empty()) {  // the layout is known before anything is read
     if (Status st = check_convert_options(convert, Layout::Faces, options.cube_frame); !st.ok()) {
-      report_error(std::string("convert: --faces: ") + st.what);
+      report_usage_error("convert", std::string("convert: --faces: ") + st.what);
       return kExitUsage;
     }
   }

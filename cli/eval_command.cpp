@@ -23,12 +23,14 @@ std::string shortest(float value) {
 
 CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
   CLI::App* cmd = app.add_subcommand("eval", "Print what Unity's shader returns for a normal");
-  cmd->add_option("document", options.document, "A JSON file written by shpack convert")
+  cmd->add_option("document", options.document, "A JSON file written by shpack convert; - for stdin")
+      ->type_name("FILE")
       ->required();
   cmd->add_option("--dir", options.direction, "The normal X,Y,Z in Unity's frame (+Y up)")
       ->required()
       ->delimiter(',')
       ->expected(3)
+      ->option_text("X,Y,Z REQUIRED")  // not CLI11's "NUMBER x 3"
       ->check(finite_number());
   return cmd;
 }
@@ -37,7 +39,7 @@ int run_eval(const EvalOptions& options) {
   const std::vector<double>& d = options.direction;
   const double length = std::hypot(d[0], d[1], d[2]);  // no overflow for huge components
   if (!(length > 0) || !std::isfinite(length)) {
-    report_error("eval: --dir must be a non-zero direction");
+    report_usage_error("eval", "eval: --dir must be a non-zero direction");
     return kExitUsage;
   }
   io::ShJsonContent content;

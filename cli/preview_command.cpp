@@ -8,6 +8,7 @@
 
 #include "output_check.h"
 #include "report.h"
+#include "validators.h"
 #include "shpack/io/atomic_write.h"
 #include "shpack/io/json_reader.h"
 #include "shpack/io/preview.h"
@@ -31,12 +32,16 @@ std::string number(double v) {
 
 CLI::App* add_preview_command(CLI::App& app, PreviewOptions& options) {
   CLI::App* cmd = app.add_subcommand("preview", "Pictures of the lighting: lit spheres, E/pi, error map (PNG)");
-  cmd->add_option("document", options.document, "A JSON file written by shpack convert")->required();
-  cmd->add_option("-o,--output", options.output, "The image to write (.png); - for stdout (the report then goes to stderr)")->required();
+  cmd->add_option("document", options.document, "A JSON file written by shpack convert")->type_name("FILE")->required();
+  cmd->add_option("-o,--output", options.output, "The image to write (.png); - for stdout (the report then goes to stderr)")
+      ->type_name("FILE")
+      ->required();
   cmd->add_option("--input", options.input,
-                  "The equirect map the document came from: adds its brute-force E/pi and the error map");
-  cmd->add_option("--size", options.size, "Sphere diameter in pixels (default 128)")
-      ->check(CLI::Range(32, 1024));
+                  "The equirect map the document came from: adds its brute-force E/pi and the error map")
+      ->type_name("FILE");
+  cmd->add_option("--size", options.size, "Sphere diameter in pixels, 32 to 1024 (default 128)")
+      ->type_name("PIXELS")
+      ->check(unsigned_in(32, 1024));
   return cmd;
 }
 
@@ -44,13 +49,13 @@ int run_preview(const PreviewOptions& options) {
   const std::filesystem::path output = options.output;
   const bool to_stdout = io::output_descriptor(output) == 1;  // "-", /dev/stdout: the PNG bytes
   if (io::output_descriptor(output) < 0 && output.extension() != ".png" && output.extension() != ".PNG") {
-    report_error("preview: " + options.output + ": the image is written as PNG; name it .png");
+    report_usage_error("preview", "preview: " + options.output + ": the image is written as PNG; name it .png");
     return kExitUsage;
   }
   std::vector<std::filesystem::path> inputs = {options.document};
   if (!options.input.empty()) inputs.emplace_back(options.input);
   if (const std::string problem = check_output_not_input(options.output, inputs); !problem.empty()) {
-    report_error(problem);
+    report_usage_error("preview", problem);
     return kExitUsage;
   }
   io::ShJsonContent content;

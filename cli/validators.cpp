@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -26,7 +27,7 @@ CLI::Validator finite_number() {
       [](std::string& text) -> std::string {
         return parse_finite(text) ? "" : "'" + text + "' is not a finite number";
       },
-      "NUMBER");
+      "");  // the option's type name says what it takes
 }
 
 CLI::Validator non_negative_finite_number() {
@@ -35,7 +36,7 @@ CLI::Validator non_negative_finite_number() {
         const std::optional<double> value = parse_finite(text);
         return value && *value >= 0 ? "" : "'" + text + "' is not a finite number >= 0";
       },
-      "NUMBER >= 0");
+      "");  // the option's type name says what it takes
 }
 
 CLI::Validator unsigned_integer() {
@@ -44,7 +45,20 @@ CLI::Validator unsigned_integer() {
         const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
         return digits ? "" : "'" + text + "' is not an unsigned integer";
       },
-      "UINT");
+      "");  // the option's type name says what it takes
+}
+
+CLI::Validator unsigned_in(std::uint64_t lo, std::uint64_t hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& text) -> std::string {
+        std::uint64_t value = 0;
+        const char* end = text.data() + text.size();
+        const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+        const auto [stop, error] = std::from_chars(text.data(), end, value);
+        if (digits && error == std::errc() && stop == end && value >= lo && value <= hi) return "";
+        return "'" + text + "' is not an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
+      },
+      "");
 }
 
 }  // namespace shpack::cli

@@ -135,7 +135,8 @@ TEST(CliLayouts, AFacePatternIsTheSixFilesItNames) {
   const fs::path out = dir / "out.json";
   const CliRun bad = run_shpack(dir, {"convert", "--faces", six[2], "-o", out.string()});
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_EQ(bad.err, "shpack: convert: --faces takes six files, or one pattern containing {face}\n");
+  EXPECT_EQ(bad.err,
+            "shpack: convert: --faces takes six files, or one pattern containing {face} (see shpack convert --help)\n");
   EXPECT_FALSE(fs::exists(out));
 }
 

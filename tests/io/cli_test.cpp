@@ -154,6 +154,48 @@ TEST(Cli, UsageErrorsExitWithTwo) {
     EXPECT_EQ(run.exit_code, 2) << joined << "\n" << run.err;
     EXPECT_EQ(run.err.rfind("shpack: ", 0), 0u) << joined << "\n" << run.err;
     EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << joined << "\n" << run.err;
+    // Each names where the options it got wrong are listed.
+    const std::string help = args.empty() ? "(see shpack --help)\n" : "(see shpack " + args[0] + " --help)\n";
+    EXPECT_TRUE(run.err.ends_with(help)) << joined << "\n" << run.err;
+  }
+}
+
+TEST(Cli, AnUnknownCommandIsNamedWithTheNearestOne) {
+  const ScratchDir dir;
+  CliRun run = shpack(dir, {"convrt", "map.exr"});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err, "shpack: 'convrt' is not a command; did you mean 'convert'? (see shpack --help)\n");
+  run = shpack(dir, {"bkae", "scene.json"});  // a transposition is one edit
+  EXPECT_EQ(run.err, "shpack: 'bkae' is not a command; did you mean 'bake'? (see shpack --help)\n");
+  run = shpack(dir, {"frobnicate"});  // nothing near: no guess
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err, "shpack: 'frobnicate' is not a command (see shpack --help)\n");
+}
+
+TEST(Cli, HelpShowsTypesAPersonReads) {
+  // CLI11's own type and validator names (UINT, FLOAT:NUMBER >= 0, UINT:(UINT) AND (UINT in
+  // [1 - 1000000])) say nothing to a person; every option names what it takes (N, K, DEG, FILE).
+  const ScratchDir dir;
+  for (const char* command : {"convert", "eval", "bench", "preview", "bake"}) {
+    const CliRun run = shpack(dir, {command, "--help"});
+    EXPECT_EQ(run.exit_code, 0) << command;
+    for (const char* jargon : {"UINT", "INT", "FLOAT", "TEXT", " AND ", ":NUMBER", "[1 - "})
+      EXPECT_EQ(run.out.find(jargon), std::string::npos) << command << " --help shows " << jargon << ":\n" << run.out;
+  }
+  const CliRun convert = shpack(dir, {"convert", "--help"});
+  for (const char* shown : {"--intensity K", "--rotate DEG", "--threads N", "-o,--output FILE", "--window W"})
+    EXPECT_NE(convert.out.find(shown), std::string::npos) << shown << "\n" << convert.out;
+}
+
+TEST(Cli, EveryCommandPrintsTheVersion) {
+  const ScratchDir dir;
+  const CliRun top = shpack(dir, {"--version"});
+  ASSERT_EQ(top.exit_code, 0);
+  ASSERT_TRUE(top.out.starts_with("shpack ")) << top.out;
+  for (const char* command : {"convert", "eval", "bench", "preview", "bake"}) {
+    const CliRun run = shpack(dir, {command, "--version"});
+    EXPECT_EQ(run.exit_code, 0) << command << ": " << run.err;
+    EXPECT_EQ(run.out, top.out) << command;
   }
 }
 

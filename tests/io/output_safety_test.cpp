@@ -209,13 +209,14 @@ TEST(OutputSafety, DirectoryTargetIsAnErrorNamingIt) {
 
 // ---- 4. an output is never an input ------------------------------------------------------
 
-// Runs `args`, expects exit 2 and "shpack: <output>: is both an input and the output", and
-// `output` unchanged.
+// Runs `args`, expects exit 2 and "shpack: <output>: is both an input and the output (see
+// shpack <command> --help)", and `output` unchanged.
 void expect_refused(const ScratchDir& dir, const std::vector<std::string>& args, const fs::path& output) {
   const std::vector<char> before = shpack_io_test::read_bytes(output);
   const CliRun run = shpack(dir, args);
   EXPECT_EQ(run.exit_code, 2) << run.err;
-  EXPECT_EQ(run.err, "shpack: " + output.string() + ": is both an input and the output\n");
+  EXPECT_EQ(run.err, "shpack: " + output.string() + ": is both an input and the output (see shpack " + args[0] +
+                         " --help)\n");
   EXPECT_EQ(shpack_io_test::read_bytes(output), before) << "the input was overwritten";
 }
 
