@@ -106,6 +106,11 @@ CLI::App* add_bake_command(CLI::App& app, BakeCommandOptions& options) {
 }
 
 int run_bake(const BakeCommandOptions& options) {
+  if (options.scene == "-") {  // the files a scene names are relative to its folder
+    report_usage_error("bake",
+                       "bake: the scene is read from a file, not stdin: its map and meshes are named relative to it");
+    return kExitUsage;
+  }
   bake::BakeJsonOptions json_options;
   json_options.format = options.format;
   if (!parse_window(options.window, json_options.window).ok()) return kExitUsage;  // checked by CLI11

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <charconv>
+#include <fstream>
 #include <string>
 
 #include "cli_runner.h"
@@ -56,6 +57,27 @@ TEST(Cli, EvalReadsAPipe) {
   const CliRun from_pipe = shpack(dir, {"eval", "/dev/stdin", "--dir", "1,0,0"}, dir / "s.json");
   ASSERT_EQ(from_pipe.exit_code, 0) << from_pipe.err;
   EXPECT_EQ(from_pipe.out, from_file.out);
+}
+
+TEST(Cli, DashReadsTheDocumentFromStdin) {
+  const ScratchDir dir;
+  ASSERT_EQ(shpack(dir, {"convert", hdri("studio.exr").string(), "-o", (dir / "s.json").string()}).exit_code, 0);
+  const CliRun from_file = shpack(dir, {"eval", (dir / "s.json").string(), "--dir", "0,0,1"});
+  const CliRun from_stdin = shpack(dir, {"eval", "-", "--dir", "0,0,1"}, dir / "s.json");
+  ASSERT_EQ(from_stdin.exit_code, 0) << from_stdin.err;
+  EXPECT_EQ(from_stdin.out, from_file.out);
+  const CliRun preview = shpack(dir, {"preview", "-", "-o", (dir / "p.png").string()}, dir / "s.json");
+  EXPECT_EQ(preview.exit_code, 0) << preview.err;
+  EXPECT_TRUE(fs::is_regular_file(dir / "p.png"));
+  // Errors name it as the reader sees it.
+  std::ofstream(dir / "bad.json") << "{";
+  const CliRun bad = shpack(dir, {"eval", "-", "--dir", "0,1,0"}, dir / "bad.json");
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_EQ(bad.err.rfind("shpack: stdin: not valid JSON", 0), 0u) << bad.err;
+  // A scene names its files relative to its own folder, which stdin does not have.
+  const CliRun bake = shpack(dir, {"bake", "-"}, dir / "s.json");
+  EXPECT_EQ(bake.exit_code, 2);
+  EXPECT_NE(bake.err.find("not stdin"), std::string::npos) << bake.err;
 }
 
 TEST(Cli, ConvertWithoutOutputPrintsTheJson) {

@@ -61,9 +61,11 @@ struct Descriptor {
 // The descriptor N that `path` names if it is /dev/stdin, /dev/fd/N or /proc/self/fd/N,
 // else -1. Only the spelling is looked at; the caller checks that the descriptor is the
 // file `path` leads to.
+constexpr std::string_view kStdin = "/dev/stdin";
+
 int named_descriptor(const fs::path& path) {
   const std::string text = path.string();
-  if (text == "/dev/stdin") return 0;
+  if (text == kStdin) return 0;
   for (const std::string_view prefix : {std::string_view("/dev/fd/"), std::string_view("/proc/self/fd/")}) {
     if (text.size() <= prefix.size() || text.compare(0, prefix.size(), prefix) != 0) continue;
     int fd = -1;
@@ -95,6 +97,11 @@ IoStatus check_readable_file(const fs::path& path) {
 }
 
 IoStatus read_text_file(const fs::path& path, std::uint64_t limit, std::string& out) {
+  if (path == "-") {
+    IoStatus st = read_text_file(kStdin, limit, out);
+    if (!st.ok()) st.message.replace(0, kStdin.size(), "stdin");  // the message starts "/dev/stdin: "
+    return st;
+  }
   struct stat named {};
   if (::stat(path.c_str(), &named) != 0) return file_error(path, errno);
   Descriptor in;

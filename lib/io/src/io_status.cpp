@@ -21,7 +21,8 @@ void append_escaped(std::string& line, char ch) {
 
 IoStatus IoStatus::error(IoErrc code, const std::filesystem::path& file, std::string_view problem) {
   std::string line;
-  for (const char ch : file.string()) append_escaped(line, ch);
+  // "-" is the standard input, as the commands take it (file_checks.h read_text_file).
+  for (const char ch : file == "-" ? std::string("stdin") : file.string()) append_escaped(line, ch);
   line += ": ";
   const std::size_t problem_start = line.size();
   bool pending_break = false;

@@ -30,6 +30,8 @@ IoStatus check_readable_file(const std::filesystem::path& path);
 inline constexpr std::uint64_t kMaxDocumentBytes = std::uint64_t{64} << 20;
 
 // Reads all of `path` into `out`, at most `limit` bytes, checked before anything is read:
+//  - "-" is the standard input, checked as /dev/stdin below (a pipe or a redirected file;
+//    a terminal is a device), its errors naming "stdin";
 //  - a regular file (or a link to one) whose size is above `limit` is refused unread;
 //  - a pipe is read only if it is one this process already holds open, named as
 //    /dev/stdin, /dev/fd/N or /proc/self/fd/N (`cmd < file`, `... | shpack eval /dev/stdin`,
