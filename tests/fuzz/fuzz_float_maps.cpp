@@ -10,9 +10,6 @@
 // RSS limit or libFuzzer's timeout (so no RLE run writes past a scanline and no header's
 // claim is allocated unchecked); a failure to open is one line that starts with the file's
 // name.
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +20,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fuzz_scratch.h"
 #include "hdr_decoder.h"
 #include "image_open.h"
 #include "pfm_decoder.h"
@@ -35,25 +33,8 @@ using shpack::io::detail::ImageDecoder;
 constexpr std::uint64_t kFuzzMaxTexels = std::uint64_t{1} << 16;
 
 const fs::path& scratch() {
-  static const fs::path dir = [] {
-    const fs::path base = fs::exists("/dev/shm") ? fs::path("/dev/shm") : fs::temp_directory_path();
-    fs::path d = base / ("shpack_fuzz_float_maps_" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
-  }();
+  static const fs::path dir = shpack_fuzz::make_scratch("float_maps");
   return dir;
-}
-
-void write_file(const fs::path& path, const std::uint8_t* data, std::size_t size) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
-  if (fd < 0) std::abort();
-  std::size_t written = 0;
-  while (written < size) {
-    const ssize_t n = ::write(fd, data + written, size - written);
-    if (n <= 0) std::abort();
-    written += static_cast<std::size_t>(n);
-  }
-  ::close(fd);
 }
 
 // Reads every row of part 0 once, in bands of `rows`, top down or bottom up.
@@ -76,7 +57,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view file(reinterpret_cast<const char*>(data + 1), size - 1);
   if (!shpack::io::detail::is_radiance_magic(file) && !shpack::io::detail::is_pfm_magic(file)) return 0;
   const fs::path path = scratch() / "in.map";
-  write_file(path, data + 1, size - 1);
+  shpack_fuzz::write_input(path, data + 1, size - 1);
 
   std::unique_ptr<ImageDecoder> decoder;
   const shpack::io::IoStatus st = shpack::io::detail::open_image(path, {kFuzzMaxTexels, 1}, decoder);

@@ -14,9 +14,6 @@
 // (That no reason is ever an empty "()" is tested in tests/io/hostile_inputs_test.cpp: here
 // the messages quote the file's own names and channels, which may hold "()".) Leaks inside
 // libOpenImageIO are suppressed (see __lsan_default_suppressions below).
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -25,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "fuzz_scratch.h"
 #include "shpack/io/image_file.h"
 #include "shpack/io/map_source.h"
 
@@ -35,25 +33,8 @@ namespace fs = std::filesystem;
 constexpr std::uint64_t kFuzzMaxTexels = std::uint64_t{1} << 16;
 
 const fs::path& scratch() {
-  static const fs::path dir = [] {
-    const fs::path base = fs::exists("/dev/shm") ? fs::path("/dev/shm") : fs::temp_directory_path();
-    fs::path d = base / ("shpack_fuzz_image_header_" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
-  }();
+  static const fs::path dir = shpack_fuzz::make_scratch("image_header");
   return dir;
-}
-
-void write_file(const fs::path& path, const std::uint8_t* data, std::size_t size) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
-  if (fd < 0) std::abort();
-  std::size_t written = 0;
-  while (written < size) {
-    const ssize_t n = ::write(fd, data + written, size - written);
-    if (n <= 0) std::abort();
-    written += static_cast<std::size_t>(n);
-  }
-  ::close(fd);
 }
 
 void check_failure(const shpack::io::IoStatus& st, const fs::path& path) {
@@ -83,7 +64,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size == 0) return 0;
   static constexpr std::array<const char*, 4> kNames = {"in.exr", "in.hdr", "in.pfm", "in.png"};
   const fs::path path = scratch() / kNames[data[0] % kNames.size()];
-  write_file(path, data + 1, size - 1);
+  shpack_fuzz::write_input(path, data + 1, size - 1);
 
   shpack::io::SourceOptions options;
   options.layout = shpack::Layout::Equirect;  // any shape: the layout is not what is fuzzed

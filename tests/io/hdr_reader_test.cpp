@@ -42,15 +42,12 @@ using shpack::io::ImageFile;
 using shpack::io::IoErrc;
 using shpack::io::IoStatus;
 using shpack_io_test::ScratchDir;
+using shpack_io_test::write_string;
 
 using Rgbe = std::array<std::uint8_t, 4>;
 using Scanline = std::vector<Rgbe>;
 
 constexpr const char* kHeader = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n";
-
-void write_string(const fs::path& path, const std::string& bytes) {
-  shpack_io_test::write_bytes(path, {bytes.begin(), bytes.end()});
-}
 
 void append(std::string& out, const Rgbe& p) { out.append(reinterpret_cast<const char*>(p.data()), 4); }
 
@@ -169,14 +166,9 @@ void expect_one_line_failure(const IoStatus& st, const fs::path& path, const std
   EXPECT_EQ(st.message.find('\n'), std::string::npos) << what << ": " << st.message;
 }
 
-// The message of reading `bytes` as a .hdr, which must fail.
+// The reason reading `bytes` as a .hdr fails.
 std::string failure(const ScratchDir& dir, const std::string& bytes) {
-  const fs::path path = dir / "bad.hdr";
-  write_string(path, bytes);
-  ImageFile image;
-  const IoStatus st = shpack::io::read_image_file(path, image);
-  expect_one_line_failure(st, path, "bad.hdr");
-  return st.message.substr(std::min(st.message.size(), path.string().size() + 2));
+  return shpack_io_test::read_failure(dir / "bad.hdr", bytes);
 }
 
 // ---- values
@@ -187,13 +179,11 @@ TEST(HdrReader, BundledMapsAreReadAsOpenImageIOReadsThem) {
   for (const fs::directory_entry& e : fs::directory_iterator(shpack_io_test::hdri(""))) {
     if (e.path().extension() != ".exr") continue;
     // The map as OpenImageIO's .hdr writer stores it (oiiotool's writer), then read back by both.
-    const std::unique_ptr<OIIO::ImageInput> exr = OIIO::ImageInput::open(e.path().string());
-    ASSERT_TRUE(exr) << OIIO::geterror();
-    const OIIO::ImageSpec& spec = exr->spec();
-    std::vector<float> rgb(std::size_t(spec.width) * spec.height * 3);
-    ASSERT_TRUE(exr->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, rgb.data())) << exr->geterror();
+    const shpack_io_test::RgbImage exr = shpack_io_test::read_rgb(e.path());
+    ASSERT_FALSE(exr.rgb.empty());
+    const std::vector<float>& rgb = exr.rgb;
     const fs::path hdr = dir / (e.path().stem().string() + ".hdr");
-    ASSERT_TRUE(shpack_io_test::write_image(hdr, spec.width, spec.height, 3, rgb));
+    ASSERT_TRUE(shpack_io_test::write_image(hdr, exr.width, exr.height, 3, rgb));
 
     const std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(hdr.string());
     ASSERT_TRUE(in) << OIIO::geterror();
@@ -201,7 +191,7 @@ TEST(HdrReader, BundledMapsAreReadAsOpenImageIOReadsThem) {
     ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, want.data())) << in->geterror();
     const ImageFile image = read_ok(hdr);
     EXPECT_EQ(image.format, "hdr");
-    EXPECT_EQ(image.width, static_cast<std::uint32_t>(spec.width));
+    EXPECT_EQ(image.width, static_cast<std::uint32_t>(exr.width));
     EXPECT_EQ(image.channels, 3u);
     EXPECT_FALSE(image.srgb_decoded);
     expect_same_floats(image.pixels, want, hdr.string());

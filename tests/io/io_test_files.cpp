@@ -3,8 +3,12 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <memory>
+
+#include "shpack/io/image_file.h"
 
 namespace shpack_io_test {
 
@@ -77,6 +81,35 @@ std::vector<char> read_bytes(const std::filesystem::path& path) {
 void write_bytes(const std::filesystem::path& path, const std::vector<char>& bytes) {
   std::ofstream out(path, std::ios::binary);
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+void write_string(const std::filesystem::path& path, const std::string& bytes) {
+  write_bytes(path, {bytes.begin(), bytes.end()});
+}
+
+RgbImage read_rgb(const std::filesystem::path& path) {
+  const std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path.string());
+  if (!in) {
+    ADD_FAILURE() << path << ": " << OIIO::geterror();
+    return {};
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+  RgbImage image{spec.width, spec.height, std::vector<float>(std::size_t(spec.width) * spec.height * 3)};
+  if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, image.rgb.data())) {
+    ADD_FAILURE() << path << ": " << in->geterror();
+    return {};
+  }
+  return image;
+}
+
+std::string read_failure(const std::filesystem::path& path, const std::string& bytes) {
+  write_string(path, bytes);
+  shpack::io::ImageFile image;
+  const shpack::io::IoStatus st = shpack::io::read_image_file(path, image);
+  EXPECT_FALSE(st.ok()) << path;
+  EXPECT_EQ(st.message.rfind(path.string() + ": ", 0), 0u) << st.message;
+  EXPECT_EQ(st.message.find('\n'), std::string::npos) << st.message;
+  return st.message.substr(std::min(st.message.size(), path.string().size() + 2));
 }
 
 std::filesystem::path hdri(const std::string& name) {

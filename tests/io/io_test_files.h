@@ -45,6 +45,19 @@ bool write_constant_image(const std::filesystem::path& path, int width, int heig
 
 std::vector<char> read_bytes(const std::filesystem::path& path);
 void write_bytes(const std::filesystem::path& path, const std::vector<char>& bytes);
+void write_string(const std::filesystem::path& path, const std::string& bytes);
+
+// The first three channels of an image, read whole as float by OpenImageIO; empty, with
+// the test failed (ADD_FAILURE), if it cannot be read.
+struct RgbImage {
+  int width = 0, height = 0;
+  std::vector<float> rgb;  // row-major from the top
+};
+RgbImage read_rgb(const std::filesystem::path& path);
+
+// Writes `bytes` to `path` and reads it with read_image_file, which must fail with one line
+// "<path>: <reason>" (the test fails otherwise); returns <reason>.
+std::string read_failure(const std::filesystem::path& path, const std::string& bytes);
 
 // data/hdri/<name> in the source tree.
 std::filesystem::path hdri(const std::string& name);
