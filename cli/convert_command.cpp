@@ -7,6 +7,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -47,7 +48,7 @@ std::string with_remedy(const io::IoStatus& st, const ConvertOptions& options) {
 // Converts one input (or the six `faces`, when there are any); writes `output`, or stdout
 // when it is empty. Returns the error line to report, or "" on success; runs on any thread.
 std::string convert_one(const fs::path& input, const std::vector<std::string>& face_files, const fs::path& output,
-                        const io::ConvertSettings& settings, const ConvertOptions& options) {
+                        const io::ConvertSettings& settings, const ConvertOptions& options, io::OutputFormat format) {
   ShDocument doc;
   std::array<fs::path, kFaceNames.size()> faces;
   std::copy(face_files.begin(), face_files.end(), faces.begin());
@@ -56,7 +57,8 @@ std::string convert_one(const fs::path& input, const std::vector<std::string>& f
       !st.ok()) {
     return with_remedy(st, options);
   }
-  const std::string json = io::format_document(doc, options.format);
+  doc.radiance_frame = options.frame;
+  const std::string json = io::format_document(doc, format);
   if (output.empty()) {
     std::cout << json << std::flush;
     return std::cout ? std::string() : std::string("stdout: cannot write the JSON");
@@ -96,7 +98,7 @@ std::string resolve_faces(const std::vector<std::string>& values, std::vector<st
   return {};
 }
 
-Plan plan_outputs(const ConvertOptions& options) {
+Plan plan_outputs(const ConvertOptions& options, io::OutputFormat format) {
   Plan plan;
   if (!options.faces.empty()) {  // one document from six files
     plan.problem = resolve_faces(options.faces, plan.faces);
@@ -124,7 +126,7 @@ Plan plan_outputs(const ConvertOptions& options) {
     const fs::path output = options.out_dir.empty()
                                 ? fs::path(options.output)
                                 : fs::path(options.out_dir) /
-                                      fs::path(input).stem().concat(io::format_extension(options.format));
+                                      fs::path(input).stem().concat(io::format_extension(format));
     if (!output.empty()) {
       if (const auto [it, fresh] = input_of_output.emplace(output, input); !fresh) {
         plan.problem = "convert: " + it->second.string() + " and " + input + " would both write " +
@@ -137,6 +139,27 @@ Plan plan_outputs(const ConvertOptions& options) {
     plan.jobs.emplace_back(input, output);
   }
   return plan;
+}
+
+// The format of the outputs: --format; else the one -o's extension names (.json, .cs, .hlsl,
+// .yaml, .gltf); else json. An explicit --format whose file the extension says is another
+// format is a usage problem naming both (threejs writes .json and filament .txt: a .json
+// file is a three.js one when --format says so). --frame is the JSON document's only.
+std::string resolve_format(const ConvertOptions& options, io::OutputFormat& format) {
+  const std::string extension = options.output.empty() || options.output == "-"
+                                    ? std::string()
+                                    : fs::path(options.output).extension().string();
+  const std::optional<io::OutputFormat> named = io::format_of_extension(extension);
+  format = options.format.value_or(named.value_or(io::OutputFormat::Json));
+  if (options.format && named && *named != *options.format && extension != io::format_extension(*options.format)) {
+    return std::string("convert: --format ") + io::format_name(*options.format) + " contradicts -o " +
+           options.output + ", whose extension " + extension + " is --format " + io::format_name(*named);
+  }
+  if (options.frame != EngineFrame::Unity && format != io::OutputFormat::Json) {
+    return std::string("convert: --frame sets the JSON document's radiance_sh; --format ") + io::format_name(format) +
+           " has its engine's frame already";
+  }
+  return {};
 }
 
 }  // namespace
@@ -153,9 +176,10 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
       ->type_name("FILE")
       ->excludes(inputs);
   CLI::Option* output = cmd->add_option("-o,--output", options.output,
-                                        "Output JSON file; - for stdout (default: stdout)")
+                                        "Output file; - for stdout (default: stdout). Its extension sets the "
+                                        "format unless --format does: .json, .cs, .hlsl, .yaml, .gltf")
                               ->type_name("FILE");
-  cmd->add_option("--out-dir", options.out_dir, "Write DIR/<stem>.json for each input")
+  cmd->add_option("--out-dir", options.out_dir, "Write DIR/<stem>.json (or the format's extension) for each input")
       ->type_name("DIR")
       ->excludes(output);
   add_enum_option(*cmd, "--layout", options.layout,
@@ -225,8 +249,18 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
       ->check(unsigned_integer());
   add_enum_option(*cmd, "--format", options.format,
                   {{"json", io::OutputFormat::Json}, {"csharp", io::OutputFormat::CSharp},
-                   {"hlsl", io::OutputFormat::Hlsl}, {"unity-yaml", io::OutputFormat::UnityYaml}},
-                  "Output: JSON, a C# SphericalHarmonicsL2, an HLSL include, Unity YAML (default json)");
+                   {"hlsl", io::OutputFormat::Hlsl}, {"unity-yaml", io::OutputFormat::UnityYaml},
+                   {"threejs", io::OutputFormat::ThreeJs}, {"filament", io::OutputFormat::Filament},
+                   {"gltf", io::OutputFormat::Gltf}},
+                  "Output: JSON, a C# SphericalHarmonicsL2, an HLSL include, Unity YAML, a three.js LightProbe "
+                  "(.json), cmgen's --sh-shader text for Filament (.txt), a glTF EXT_lights_image_based light "
+                  "(.gltf) (default: from -o's extension, else json)");
+  std::vector<std::pair<std::string, EngineFrame>> frames;
+  for (std::size_t k = 0; k < kEngineFrames.size(); ++k)
+    frames.emplace_back(kEngineFrames[k].name, static_cast<EngineFrame>(k));
+  add_enum_option(*cmd, "--frame", options.frame, frames,
+                  "Frame of the JSON's radiance_sh: unity, threejs (z mirrored), gltf (x mirrored), unreal "
+                  "(Z up, Condon-Shortley signs), blender (Z up), filament (default unity; docs/conventions.md)");
   cmd->add_flag("--l1", options.l1, "L1 only (band 2 removed), for Light Probe Proxy Volumes");
   cmd->add_flag("--extract-sun", options.extract_sun,
                 "Take the sun out of the map and write it as a Unity directional light (JSON \"sun\")");
@@ -239,7 +273,12 @@ int run_convert(const ConvertOptions& options) {
     report_usage_error("convert", "convert: --intensity times 2^--exposure is not a finite number");
     return kExitUsage;
   }
-  const Plan plan = plan_outputs(options);
+  io::OutputFormat format = io::OutputFormat::Json;
+  if (const std::string problem = resolve_format(options, format); !problem.empty()) {
+    report_usage_error("convert", problem);
+    return kExitUsage;
+  }
+  const Plan plan = plan_outputs(options, format);
   if (!plan.problem.empty()) {
     report_usage_error("convert", plan.problem);
     return kExitUsage;
@@ -287,7 +326,7 @@ int run_convert(const ConvertOptions& options) {
   run_in_order<std::string>(
       plan.jobs.size(), files,
       [&](std::size_t k) {
-        return convert_one(plan.jobs[k].first, plan.faces, plan.jobs[k].second, settings, options);
+        return convert_one(plan.jobs[k].first, plan.faces, plan.jobs[k].second, settings, options, format);
       },
       [&](std::size_t, std::string& error) {
         if (!error.empty()) report_error(error);

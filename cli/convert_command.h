@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "shpack/conventions.h"
+#include "shpack/engine_frame.h"
 #include "shpack/colorspace.h"
 #include "shpack/layout.h"
 #include "shpack/io/image_file.h"
@@ -38,7 +39,8 @@ struct ConvertOptions {
   double rotate_deg = 0.0; // yaw about +Y, degrees (Skybox/Panoramic _Rotation)
   std::string window = "none";  // --window, parsed by shpack::parse_window
   unsigned threads = 0;    // 0: all hardware threads
-  io::OutputFormat format = io::OutputFormat::Json;  // --format
+  std::optional<io::OutputFormat> format;  // --format; unset: from -o's extension, else json
+  EngineFrame frame = EngineFrame::Unity;  // --frame: the frame of the JSON's radiance_sh
   bool l1 = false;         // --l1: band 2 removed (FinishOptions::l1)
   bool extract_sun = false;  // --extract-sun (light_extraction.h)
   std::vector<std::string> faces;  // --faces: six face files in Unity's order, or one {face} pattern

@@ -3,8 +3,8 @@
 // Normative source: shared/docs/unity-sh-conventions.md (copied to docs/conventions.md).
 // tests/projection/conventions_test.cpp pins each statement below with a test.
 //
-// Frame. All SH that shpack emits are in Unity's world frame: LEFT-handed, +X right,
-// +Y up, +Z forward. A right-handed Y-up frame (OpenGL, three.js, glTF) maps to it by
+// Frame. All SH that shpack computes are in Unity's world frame: LEFT-handed, +X right,
+// +Y up, +Z forward (the outputs for other engines are mapped from it by engine_frame.h). A right-handed Y-up frame (OpenGL, three.js, glTF) maps to it by
 // d_unity = (x, y, -z), which flips the signs of SH indices 2 (z), 5 (yz) and 7 (xz).
 //
 // Equirectangular (latitude-longitude) images follow Unity's Skybox/Panoramic shader

@@ -22,6 +22,7 @@
 
 #include "shpack/colorspace.h"
 #include "shpack/conventions.h"
+#include "shpack/engine_frame.h"
 #include "shpack/layout.h"
 #include "shpack/pipeline.h"
 #include "shpack/rotate.h"
@@ -63,6 +64,9 @@ struct ShDocument {
   bool l1 = false;          // band 2 removed (above)
   std::optional<Matrix3> colour_matrix;  // applied to the input's RGB, if it was not Rec. 709
   bool sun_extraction = false;           // --extract-sun was asked for (light_extraction.h)
+  // The frame the JSON document's radiance_sh is written in (--frame, engine_frame.h);
+  // everything else stays in Unity's frame.
+  EngineFrame radiance_frame = EngineFrame::Unity;
   // The result.
   FinishedSh sh;
   ShTexelCounts texels;

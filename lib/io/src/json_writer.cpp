@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "shpack/engine_frame.h"
 #include "shpack/io/sh_record_json.h"
 #include "shpack/io/version.h"
 
@@ -62,8 +63,17 @@ std::string to_json(const ShDocument& doc) {
                   {"rotate_deg", doc.rotate_deg},
                   {"intensity", doc.intensity}};
   if (doc.l1) j["options"]["l1"] = true;  // --l1 (document.h): only when given
-  j["frame"] = "unity: left-handed, +Y up, +Z forward";
+  j["frame"] = engine_frame_spec(EngineFrame::Unity).description;
+  // --frame (engine_frame.h): radiance_sh alone in another engine's frame and basis signs;
+  // the Unity forms and every direction stay in Unity's frame.
+  const bool other_frame = doc.radiance_frame != EngineFrame::Unity;
+  if (other_frame) j["radiance_sh_frame"] = engine_frame_spec(doc.radiance_frame).description;
   put_sh_values(doc.sh, j);
+  if (other_frame) {
+    Json radiance = Json::array();
+    for (const auto& channel : sh_to_engine_frame(doc.radiance_frame, doc.sh.radiance).c) radiance.push_back(channel);
+    j["radiance_sh"] = std::move(radiance);
+  }
   Json diagnostics = {{"nonfinite_texels", doc.texels.nonfinite_texels},
                       {"negative_texels", doc.texels.negative_texels},
                       {"ignored_channels", doc.reading.ignored_channels}};
