@@ -21,6 +21,8 @@ packages=(
   clang libclang-rt-14-dev       # tests/fuzz: libFuzzer targets (clang++ -fsanitize=fuzzer)
   gnuplot-nox                    # shpack bench --plot
   help2man                       # the man page that cmake --install installs, from shpack --help
+  libfilament-tools              # tests/io: cmgen, against which --format filament is checked
+  nodejs                         # tests/io: node runs three.js on --format threejs's output
 )
 
 missing=()
@@ -29,6 +31,8 @@ for package in "${packages[@]}"; do
     missing+=("$package")
   fi
 done
+# npm fetches three.js for that test; some nodejs builds carry it, Debian's comes apart.
+command -v npm >/dev/null || missing+=(npm)
 if ((${#missing[@]} == 0)); then
   exit 0
 fi
