@@ -61,6 +61,16 @@ TEST(JsonWriter, KeysAreThoseOfTheDesignInOrder) {
                                       "window_impossible"}));
 }
 
+TEST(JsonWriter, WritesTheViewErrorWhenTheDocumentHasOne) {
+  ShDocument doc = sample_document();
+  doc.view_error = shpack::ViewError{12.5, 4.25, 0.5, 2, {0, 1, 0}};
+  const Json d = Json::parse(to_json(doc))["diagnostics"];
+  EXPECT_EQ(d["unity_view_error_max_pct"], 12.5);
+  EXPECT_EQ(d["unity_view_error_rms_pct"], 4.25);
+  EXPECT_EQ(d["unity_view_error_bound_pct"], 0.5);
+  EXPECT_EQ(d["unity_view_error_directions"], shpack::kViewErrorDirections);
+}
+
 TEST(JsonWriter, ValuesAreThoseOfTheDocument) {
   const ShDocument doc = sample_document();
   const Json j = Json::parse(to_json(doc));

@@ -71,6 +71,7 @@ struct ShDocument {
   FinishedSh sh;
   ShTexelCounts texels;
   std::optional<FinishedLight> sun;  // the sun found, if any
+  std::optional<ViewError> view_error;  // what Unity shows against the input (view_error.h)
 };
 
 // The document of a conversion of `source`, read as `reading`, with `options`.

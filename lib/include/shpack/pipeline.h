@@ -43,6 +43,8 @@
 #include "shpack/status.h"
 #include "shpack/unity_light.h"
 #include "shpack/unity_pack.h"
+#include "shpack/view_error.h"
+#include "shpack/view_reference.h"
 #include "shpack/window.h"
 
 namespace shpack {
@@ -113,6 +115,9 @@ struct Conversion {
   ProjectStats stats;                 // what the projector saw (sampling methods: their reads)
   FinishedSh sh;
   std::optional<FinishedLight> sun;   // extract_sun found one
+  // What Unity shows against the exact E/pi of the input (view_error.h); absent only when
+  // finish_conversion was given no reference.
+  std::optional<ViewError> view_error;
 };
 
 // The checks that need no pixels: the method's parameter (validate_method), the finish
@@ -137,8 +142,15 @@ Status apply_nonfinite_policy(const ProjectStats& stats, NonFinite policy) noexc
 Status convert_map(const MapImage& map, const ConvertOptions& options, Conversion& out,
                    ProjectStats* seen = nullptr) noexcept;
 
-// Stage 4 on a projection made elsewhere (the streamed path): the SH and the light.
+// Stage 4 on a projection made elsewhere (the streamed path): the SH and the light, and the
+// view error against `reference` (view_error.h), sampled from the input before any transform.
 Status finish_conversion(const ShL2& projected, const ProjectStats& stats, const std::optional<SunLight>& sun,
-                         const FinishOptions& options, Conversion& out) noexcept;
+                         const FinishOptions& options, const ViewSamples* reference, Conversion& out) noexcept;
+
+// The reference E/pi (view_reference.h) of a whole map of any layout, under the projector's
+// value policies (NaN/Inf read as 0), sampled at view_error.h's directions. Errors: BadView,
+// InvalidArgument (faces of unequal sizes, a cube image of the wrong shape), OutOfMemory.
+Status build_view_reference(const MapImage& map, const ProjectOptions& options, ViewReference& out) noexcept;
+Status sample_map_reference(const MapImage& map, const ConvertOptions& options, ViewSamples& out) noexcept;
 
 }  // namespace shpack

@@ -31,14 +31,21 @@ IoStatus nonfinite_error(const MapSource& source, const ProjectStats& seen, cons
 }
 
 // Stage 3 streamed: bands of rows into the core's EquirectProjector, NaN/Inf counted.
-IoStatus project_streamed(MapSource& source, const ConvertOptions& options, ShL2& radiance, ProjectStats& stats) {
+// The same bands go into the reference E/pi of the view error, sampled here.
+IoStatus project_streamed(MapSource& source, const ConvertOptions& options, ShL2& radiance, ProjectStats& stats,
+                          ViewSamples& samples) {
   const fs::path& path = source.path();
   EquirectProjector projector;
+  ViewReference reference;
   const ProjectOptions project{options.method.method, NonFinite::Zero, options.negative, options.threads};
   if (Status st = projector.begin(source.info().width, source.info().height, project); !st.ok())
     return core_error(path, st);
-  if (IoStatus st = source.stream_into(projector, options.threads); !st.ok()) return st;
+  if (Status st = reference.begin_equirect(source.info().width, source.info().height, project); !st.ok())
+    return core_error(path, st);
+  if (IoStatus st = source.stream_into(projector, reference, options.threads); !st.ok()) return st;
   if (Status st = projector.finish(radiance, &stats); !st.ok()) return core_error(path, st);
+  if (Status st = reference.finish(); !st.ok()) return core_error(path, st);
+  if (Status st = sample_view_reference(reference, samples); !st.ok()) return core_error(path, st);
   return IoStatus::success();
 }
 
@@ -58,9 +65,10 @@ IoStatus run_stages(MapSource& source, const ConvertSettings& settings, Conversi
   if (streams_rows(options, layout)) {
     ShL2 radiance;
     ProjectStats stats;
-    if (IoStatus st = project_streamed(source, options, radiance, stats); !st.ok()) return st;
+    ViewSamples samples;
+    if (IoStatus st = project_streamed(source, options, radiance, stats, samples); !st.ok()) return st;
     if (!apply_nonfinite_policy(stats, options.nonfinite).ok()) return nonfinite_error(source, stats, options.method);
-    if (Status st = finish_conversion(radiance, stats, std::nullopt, options.finish, out); !st.ok())
+    if (Status st = finish_conversion(radiance, stats, std::nullopt, options.finish, &samples, out); !st.ok())
       return core_error(path, st);
     return IoStatus::success();
   }

@@ -83,6 +83,12 @@ std::string to_json(const ShDocument& doc) {
     diagnostics["window_rms_change"] = doc.sh.window.rms_change;
     diagnostics["window_planes"] = doc.sh.window.planes;
   }
+  if (doc.view_error) {
+    diagnostics["unity_view_error_max_pct"] = doc.view_error->max_pct;
+    diagnostics["unity_view_error_rms_pct"] = doc.view_error->rms_pct;
+    diagnostics["unity_view_error_bound_pct"] = doc.view_error->bound_pct;
+    diagnostics["unity_view_error_directions"] = kViewErrorDirections;
+  }
   j["diagnostics"] = std::move(diagnostics);
   if (doc.sun_extraction) j["sun"] = doc.sun ? sun_json(*doc.sun) : Json(nullptr);  // null: no sun found
   // A file name need not be UTF-8 on Linux: replace bad bytes rather than fail.

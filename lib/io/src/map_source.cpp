@@ -118,7 +118,7 @@ IoStatus MapSource::open_faces(const std::array<fs::path, kCubeFaceCount>& paths
   return IoStatus::success();
 }
 
-IoStatus MapSource::stream_into(EquirectProjector& projector, unsigned threads) {
+IoStatus MapSource::stream_into(EquirectProjector& projector, ViewReference& reference, unsigned threads) {
   const fs::path& file = paths_[0];
   return guarded(file, [&] {
     image_->set_threads(threads);
@@ -130,6 +130,7 @@ IoStatus MapSource::stream_into(EquirectProjector& projector, unsigned threads) 
       if (IoStatus st = image_->read_rows(first, count, band.data()); !st.ok()) return st;
       const ImageView view = make_view(band.data(), info_.width, count, used);
       if (Status st = projector.add_rows(view, first); !st.ok()) return core_error(file, st);
+      if (Status st = reference.add_rows(view, first); !st.ok()) return core_error(file, st);
     }
     return IoStatus::success();
   });

@@ -11,6 +11,7 @@
 
 struct shpack_projector {
   shpack::EquirectProjector projector;
+  shpack::ViewReference reference;  // the truth that the result's view error is measured against
   shpack::FinishOptions finish;
   bool finished = false;
 };
@@ -99,6 +100,10 @@ int32_t shpack_projector_create(uint32_t width, uint32_t height, const shpack_op
     delete p;
     return report(st, error);
   }
+  if (Status st = p->reference.begin_equirect(width, height, project); !st.ok()) {
+    delete p;
+    return report(st, error);
+  }
   *projector = p;
   return report(Status::success(), error);
 }
@@ -108,7 +113,8 @@ int32_t shpack_projector_add_rows(shpack_projector* projector, const shpack_imag
   if (projector == nullptr || rows == nullptr) return invalid("projector and rows must not be NULL", error);
   shpack::ImageView view;
   if (Status st = to_view(*rows, view); !st.ok()) return report(st, error);
-  return report(projector->projector.add_rows(view, first_row), error);
+  if (Status st = projector->projector.add_rows(view, first_row); !st.ok()) return report(st, error);
+  return report(projector->reference.add_rows(view, first_row), error);
 }
 
 int32_t shpack_projector_finish(shpack_projector* projector, shpack_result* result, shpack_error* error) {
@@ -119,8 +125,11 @@ int32_t shpack_projector_finish(shpack_projector* projector, shpack_result* resu
   shpack::ProjectStats stats;
   if (Status st = projector->projector.finish(radiance, &stats); !st.ok()) return report(st, error);
   projector->finished = true;
+  shpack::ViewSamples samples;
+  if (Status st = projector->reference.finish(); !st.ok()) return report(st, error);
+  if (Status st = shpack::sample_view_reference(projector->reference, samples); !st.ok()) return report(st, error);
   shpack::Conversion conversion;
-  if (Status st = shpack::finish_conversion(radiance, stats, std::nullopt, projector->finish, conversion); !st.ok())
+  if (Status st = shpack::finish_conversion(radiance, stats, std::nullopt, projector->finish, &samples, conversion); !st.ok())
     return report(st, error);
   *result = result_of(conversion);
   return report(Status::success(), error);

@@ -1,32 +1,19 @@
 // convert_map.cpp - stages 2 and 3 of the pipeline (pipeline.h) on a whole image, and the
 // checks that decide which stages run.
+#include <span>
 #include <string>
 
 #include "shpack/pipeline.h"
 #include "shpack/project_cube.h"
 #include "shpack/project_sphere_map.h"
+#include "pipeline/layout_dispatch.h"
 
 namespace shpack {
+using detail::cube_layout_of;
+using detail::is_sphere_map;
+using detail::sphere_map_of;
+
 namespace {
-
-CubeLayout cube_layout_of(Layout layout) noexcept {
-  switch (layout) {
-    case Layout::VerticalCross: return CubeLayout::VerticalCross;
-    case Layout::HorizontalStrip: return CubeLayout::HorizontalStrip;
-    case Layout::VerticalStrip: return CubeLayout::VerticalStrip;
-    default: return CubeLayout::HorizontalCross;
-  }
-}
-
-SphereMap sphere_map_of(Layout layout) noexcept {
-  return layout == Layout::Angular ? SphereMap::Angular
-         : layout == Layout::MirrorBall ? SphereMap::MirrorBall
-                                        : SphereMap::Octahedral;
-}
-
-bool is_sphere_map(Layout layout) noexcept {
-  return layout == Layout::Octahedral || layout == Layout::Angular || layout == Layout::MirrorBall;
-}
 
 // The frame's signs on the coefficients (conventions.h cube_frame_sign).
 void apply_cube_frame(CubeFrame frame, ShL2& radiance) noexcept {
@@ -104,6 +91,9 @@ Status apply_nonfinite_policy(const ProjectStats& stats, NonFinite policy) noexc
 
 Status convert_map(const MapImage& map, const ConvertOptions& options, Conversion& out, ProjectStats* seen) noexcept {
   if (Status st = check_convert_options(options, map.layout, map.cube_frame); !st.ok()) return st;
+  // The truth is the input as it is, before any transform takes a light out of it.
+  ViewSamples reference;
+  if (Status st = sample_map_reference(map, options, reference); !st.ok()) return st;
   std::optional<SunLight> sun;
   if (Status st = transform(map, options, sun); !st.ok()) return st;
   ShL2 radiance;
@@ -113,17 +103,30 @@ Status convert_map(const MapImage& map, const ConvertOptions& options, Conversio
     if (seen != nullptr) *seen = stats;
     return st;
   }
-  return finish_conversion(radiance, stats, sun, options.finish, out);
+  return finish_conversion(radiance, stats, sun, options.finish, &reference, out);
 }
 
 Status finish_conversion(const ShL2& projected, const ProjectStats& stats, const std::optional<SunLight>& sun,
-                         const FinishOptions& options, Conversion& out) noexcept {
+                         const FinishOptions& options, const ViewSamples* reference, Conversion& out) noexcept {
   Conversion result;
   result.stats = stats;
   if (Status st = finish_projection(projected, options, result.sh); !st.ok()) return st;
   if (sun) result.sun = finish_light(*sun, options);
-  out = result;
+  if (reference != nullptr) {
+    const std::span<const UnitySunLight> lights =
+        result.sun ? std::span<const UnitySunLight>(&result.sun->unity, 1) : std::span<const UnitySunLight>();
+    const ViewTransform transform{options.colour_matrix, options.intensity, options.rotate_deg};
+    result.view_error = unity_view_error(*reference, transform, result.sh.shader, lights);
+  }
+  out = std::move(result);
   return Status::success();
+}
+
+Status sample_map_reference(const MapImage& map, const ConvertOptions& options, ViewSamples& out) noexcept {
+  ViewReference reference;
+  const ProjectOptions project{SamplingMethod::Exact, NonFinite::Zero, options.negative, 1};
+  if (Status st = build_view_reference(map, project, reference); !st.ok()) return st;
+  return sample_view_reference(reference, out);
 }
 
 }  // namespace shpack

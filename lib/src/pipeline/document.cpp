@@ -19,6 +19,7 @@ ShDocument make_document(ShSource source, ShReading reading, const ConvertOption
   doc.sh = conversion.sh;
   doc.texels = {conversion.stats.nonfinite_texels, conversion.stats.negative_texels};
   doc.sun = conversion.sun;
+  doc.view_error = conversion.view_error;
   return doc;
 }
 

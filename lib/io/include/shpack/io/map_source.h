@@ -96,9 +96,10 @@ class MapSource {
   // The file that face `face` came from (the one file of a single image).
   const std::filesystem::path& path(std::uint32_t face = 0) const noexcept;
 
-  // Streams the whole image (not faces) into `projector`, begun on this image's size: bands
-  // of whole projection tiles, one per worker thread, within kBandBudgetBytes.
-  IoStatus stream_into(EquirectProjector& projector, unsigned threads);
+  // Streams the whole image (not faces) into `projector` and `reference` (the view error's
+  // truth), both begun on this image's size: bands of whole projection tiles, one per worker
+  // thread, within kBandBudgetBytes.
+  IoStatus stream_into(EquirectProjector& projector, ViewReference& reference, unsigned threads);
 
   // The whole image, or the six faces, as float in memory this source owns (valid while it
   // lives), writable for the transforms.
