@@ -7,9 +7,10 @@
 // Each cell holds, per channel, from the exact texel integrals
 //   m   = sum_t L_t int_t w dw          (the flux vector)
 //   P+  = sum_{L_t > 0} L_t Omega_t,    P- = sum_{L_t < 0} |L_t| Omega_t,
-// and a cap (centre c, angular radius R) holding every point of its texels. The four texels
-// of largest sum_c |L_c| Omega in each finest cell are kept as leaves of their own, with their
-// own cap (a sun, a lamp), and the rest of the cell as one leaf.
+// and a cap (centre c, angular radius R) holding every point of its texels. Of the four texels
+// of largest sum_c |L_c| Omega in each finest cell, those carrying at least 1/8 of the cell's
+// sum are kept as leaves of their own, with their own cap (a sun, a lamp), and the rest of the
+// cell as one leaf.
 //
 // Evaluation. E(n) = sum_t L_t int_t max(0, n.w) dw. A node entirely above the horizon of n
 // (angle(n, c) <= 90 - R degrees) adds n.m exactly; one entirely below adds 0; one the

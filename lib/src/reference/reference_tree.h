@@ -16,6 +16,7 @@ namespace shpack::detail {
 inline constexpr std::uint32_t kReferenceCellsW = 128, kReferenceCellsH = 64;  // the finest grid, at most
 inline constexpr std::uint32_t kReferenceTopW = 16, kReferenceTopH = 8;        // the top level, at most
 inline constexpr int kHeavyTexels = 4;  // texels kept as leaves of their own, per finest cell
+inline constexpr double kHeavyShare = 0.125;  // of the cell's sum |L| Omega, at least
 
 // A texel kept apart: its radiance, solid angle, int w dw and angular diameter.
 struct HeavyTexel {

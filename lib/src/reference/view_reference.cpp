@@ -155,8 +155,14 @@ Status ViewReference::State::build_tree() noexcept {
       const detail::FinestCell& cell = cells[i];
       Node& rest = levels[0][i];
       for (int ch = 0; ch < 3; ++ch) mean[ch] += (cell.sums.positive[ch] - cell.sums.negative[ch]) / (4 * std::numbers::pi);
-      heavy_counts[i] = static_cast<std::uint8_t>(cell.heavy_count);
-      for (int k = 0; k < cell.heavy_count; ++k) {
+      // Only a texel that carries a good part of its cell (kHeavyShare of its sum |L| Omega)
+      // is worth a leaf: a lighter one narrows the bound by less than it costs to visit.
+      double cell_weight = 0;
+      for (int ch = 0; ch < 3; ++ch) cell_weight += cell.sums.positive[ch] + cell.sums.negative[ch];
+      int kept = 0;
+      while (kept < cell.heavy_count && cell.heavy[kept].weight >= detail::kHeavyShare * cell_weight) ++kept;
+      heavy_counts[i] = static_cast<std::uint8_t>(kept);
+      for (int k = 0; k < kept; ++k) {
         const CellSums t = detail::texel_sums(cell.heavy[k]);
         Node& leaf = heavy_leaves[i * detail::kHeavyTexels + k];
         leaf.cap = detail::texel_cap(cell.heavy[k]);
