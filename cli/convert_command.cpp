@@ -262,8 +262,14 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
                   "Frame of the JSON's radiance_sh: unity, threejs (z mirrored), gltf (x mirrored), unreal "
                   "(Z up, Condon-Shortley signs), blender (Z up), filament (default unity; docs/conventions.md)");
   cmd->add_flag("--l1", options.l1, "L1 only (band 2 removed), for Light Probe Proxy Volumes");
-  cmd->add_flag("--extract-sun", options.extract_sun,
-                "Take the sun out of the map and write it as a Unity directional light (JSON \"sun\")");
+  CLI::Option* sun = cmd->add_flag("--extract-sun", options.extract_sun,
+                                   "Take the sun out of the map and write it as a Unity directional light (JSON \"sun\")");
+  cmd->add_option("--extract-lights", options.extract_lights,
+                  "Take up to N (0 to 8) compact bright sources out of the map as Unity directional lights, "
+                  "each only if it lowers the max error of what Unity shows (JSON \"lights\"; default 0)")
+      ->type_name("N")
+      ->check(unsigned_in(0, kMaxExtractedLights))
+      ->excludes(sun);
   return cmd;
 }
 
@@ -307,6 +313,7 @@ int run_convert(const ConvertOptions& options) {
   convert.nonfinite = options.nonfinite;
   convert.negative = options.negative;
   convert.extract_sun = options.extract_sun;
+  convert.extract_lights = options.extract_lights;
   convert.finish.intensity = factor;
   convert.finish.rotate_deg = options.rotate_deg;
   if (!parse_window(options.window, convert.finish.window).ok()) return kExitUsage;  // checked by CLI11

@@ -43,6 +43,7 @@ struct ConvertOptions {
   EngineFrame frame = EngineFrame::Unity;  // --frame: the frame of the JSON's radiance_sh
   bool l1 = false;         // --l1: band 2 removed (FinishOptions::l1)
   bool extract_sun = false;  // --extract-sun (light_extraction.h)
+  unsigned extract_lights = 0;  // --extract-lights N (light_choice.h)
   std::vector<std::string> faces;  // --faces: six face files in Unity's order, or one {face} pattern
   CubeFrame cube_frame = CubeFrame::Unity;  // --cube-frame
   std::string layer;                        // --layer: EXR part or channel layer

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -206,7 +207,15 @@ TEST(CApi, StreamingInBandsEqualsOneShot) {
   shpack_error error;
   EXPECT_EQ(shpack_projector_finish(projector, &streamed, &error), SHPACK_BAD_SEQUENCE);
   EXPECT_STREQ(error.message, "the projector was already finished");
+  // Its view error is shpack_convert's on the whole image.
+  shpack_view_error view_error{};
+  ASSERT_EQ(shpack_projector_view_error(projector, &view_error, nullptr), SHPACK_OK);
   shpack_projector_destroy(projector);
+  shpack_map map = equirect_map(file);
+  shpack_convert_options convert = convert_defaults();
+  const shpack_conversion one_shot = convert_ok(map, convert);
+  EXPECT_EQ(std::memcmp(&view_error, &one_shot.view_error, sizeof view_error), 0);
+  EXPECT_EQ(view_error.directions, 512u);
   for (int k = 0; k < 27; ++k) {
     EXPECT_EQ(std::bit_cast<std::uint64_t>(streamed.radiance_sh[k]), std::bit_cast<std::uint64_t>(whole.radiance_sh[k]));
     EXPECT_EQ(std::bit_cast<std::uint32_t>(streamed.unity_sh[k]), std::bit_cast<std::uint32_t>(whole.unity_sh[k]));
@@ -441,6 +450,71 @@ TEST(CApiConvert, TheExtractedSunMatchesTheCommandLine) {
   EXPECT_EQ(convert_ok(map, options).has_sun, 0);
 }
 
+// The view error of a result is the document's diagnostics, bit for bit.
+void expect_view_error_is_document(const shpack_view_error& e, const Json& doc) {
+  const Json& d = doc["diagnostics"];
+  EXPECT_EQ(e.max_pct, d["unity_view_error_max_pct"].get<double>());
+  EXPECT_EQ(e.rms_pct, d["unity_view_error_rms_pct"].get<double>());
+  EXPECT_EQ(e.bound_pct, d["unity_view_error_bound_pct"].get<double>());
+  EXPECT_EQ(e.directions, d["unity_view_error_directions"].get<std::uint32_t>());
+}
+
+TEST(CApiConvert, ExtractedLightsAndTheViewErrorMatchTheCommandLine) {
+  const ScratchDir dir;
+  shpack::io::ImageFile file;
+  ASSERT_TRUE(shpack::io::read_image_file(hdri("studio.exr"), file).ok());
+  const shpack_map map = equirect_map(file);
+  shpack_convert_options options = convert_defaults();
+  options.extract_lights = 3;
+  options.rotate_deg = 40;
+  const Json doc = command_document(dir, {hdri("studio.exr").string(), "--extract-lights", "3", "--rotate", "40"});
+  const shpack_conversion out = convert_ok(map, options);
+  expect_result_is_document(out.sh, doc);
+  expect_view_error_is_document(out.view_error, doc);
+  ASSERT_TRUE(doc["lights"].is_array());
+  ASSERT_EQ(out.light_count, doc["lights"].size());
+  EXPECT_EQ(out.light_candidates, doc["light_candidates"].get<std::uint32_t>());
+  EXPECT_GE(out.light_count, 1u);  // the studio's softbox is the brightest candidate
+  for (std::uint32_t k = 0; k < out.light_count; ++k) {
+    SCOPED_TRACE(k);
+    const Json& light = doc["lights"][k];
+    expect_light_is_document(out.lights[k].light, light);
+    EXPECT_EQ(out.lights[k].error_before_pct, light["unity_view_error_before_pct"].get<double>());
+    EXPECT_EQ(out.lights[k].error_after_pct, light["unity_view_error_after_pct"].get<double>());
+    EXPECT_LT(out.lights[k].error_after_pct, out.lights[k].error_before_pct);
+  }
+  // Without lights, the plain document's view error.
+  const Json plain = command_document(dir, {hdri("studio.exr").string()});
+  expect_view_error_is_document(convert_ok(map, convert_defaults()).view_error, plain);
+}
+
+TEST(CApiConvert, AnOlderCallersStructsAreReadAndWrittenToTheirOwnSize) {
+  // A caller built against the first release: its options end before extract_lights (read
+  // as 0, whatever lies beyond), its conversion before view_error (nothing written there).
+  shpack::io::ImageFile file;
+  ASSERT_TRUE(shpack::io::read_image_file(hdri("sunset.exr"), file).ok());
+  const shpack_map map = equirect_map(file);
+  shpack_convert_options options = convert_defaults();
+  options.struct_size = offsetof(shpack_convert_options, extract_lights);
+  options.extract_lights = 99;  // beyond its struct: not read
+  options.extract_sun = 1;
+  shpack_conversion out;
+  std::memset(&out, 0xA5, sizeof out);
+  out.struct_size = offsetof(shpack_conversion, view_error);
+  shpack_error error{};
+  ASSERT_EQ(shpack_convert(&map, &options, &out, &error), SHPACK_OK) << error.message;
+  EXPECT_EQ(out.struct_size, offsetof(shpack_conversion, view_error));
+  EXPECT_EQ(out.has_sun, 1);
+  const auto* tail = reinterpret_cast<const unsigned char*>(&out) + offsetof(shpack_conversion, view_error);
+  EXPECT_TRUE(std::all_of(tail, reinterpret_cast<const unsigned char*>(&out + 1),
+                          [](unsigned char b) { return b == 0xA5; }));
+  options = convert_defaults();
+  options.extract_sun = 1;
+  const shpack_conversion current = convert_ok(map, options);
+  expect_same_result(out.sh, current.sh);
+  EXPECT_EQ(std::memcmp(&out.sun, &current.sun, sizeof(shpack_light)), 0);
+}
+
 TEST(CApiConvert, HalfFloatTexelsAreCopiedExactlyForTheSun) {
   // extract_sun works on an F32 copy of the caller's view: F16 texels become the floats they
   // are exactly, so an F16 map and the F32 map of the same values give the same bits.
@@ -506,7 +580,7 @@ TEST(CApiConvert, BadArgumentsAreRefusedAndLeaveTheResult) {
     return shpack_convert(&m, &o, &out, &error) == SHPACK_INVALID_ARGUMENT && out.sh.unity_sh[0] == 42.0f;
   };
   shpack_convert_options options = convert_defaults();
-  options.struct_size -= 8;  // a caller compiled against another version
+  options.struct_size -= 4;  // a caller compiled against no version
   EXPECT_TRUE(refused(map, options));
   EXPECT_NE(std::string(error.message).find("struct_size"), std::string::npos);
   options = convert_defaults();
@@ -519,6 +593,13 @@ TEST(CApiConvert, BadArgumentsAreRefusedAndLeaveTheResult) {
   options.exposure_ev = 0;
   options.extract_sun = 2;
   EXPECT_TRUE(refused(map, options));
+  options.extract_sun = 0;
+  options.extract_lights = SHPACK_MAX_EXTRACTED_LIGHTS + 1;
+  EXPECT_TRUE(refused(map, options));
+  options.extract_lights = 1;
+  options.extract_sun = 1;  // the sun is the first of the lights: one or the other
+  EXPECT_TRUE(refused(map, options));
+  options.extract_lights = 0;
   options.extract_sun = 0;
   map.layout = 42;
   EXPECT_TRUE(refused(map, options));
@@ -552,7 +633,7 @@ TEST(CApi, SharedLibraryExportsOnlyTheCFunctions) {
     ++functions;
   }
   EXPECT_EQ(::pclose(pipe), 0);
-  EXPECT_EQ(functions, 12);  // the functions of shpack_c.h
+  EXPECT_EQ(functions, 13);  // the functions of shpack_c.h
 #else
   GTEST_SKIP() << "nm -D is the check on Linux";
 #endif

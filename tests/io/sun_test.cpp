@@ -1,11 +1,12 @@
 // convert --extract-sun from the command line: the document's "sun" is an object with the
 // Unity light when the map has a sun, null when it has none, absent without the option; the
-// option reads equirect maps only. The extraction itself (direction, irradiance, the sky's
+// option reads equirect maps only. --extract-lights N: "lights", each lowering the error. The extraction itself (direction, irradiance, the sky's
 // SH, the Unity light) is the core's, tested on pixels in tests/extraction.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
+#include <cstddef>
 #include <string>
 
 #include "cli_runner.h"
@@ -32,6 +33,38 @@ TEST(SunExtractionCli, CommandWritesTheSunOrNull) {
   EXPECT_FALSE(nlohmann::json::parse(run.out).contains("sun"));
   const std::string f = shpack_io_test::hdri("studio.exr").string();
   run = shpack_io_test::run_shpack(dir, {"convert", "--faces", f, f, f, f, f, f, "--extract-sun"});
+  EXPECT_EQ(run.exit_code, 2) << run.err;  // equirect maps only
+}
+
+TEST(LightExtractionCli, CommandWritesTheChosenLightsOrAnEmptyArray) {
+  const ScratchDir dir;
+  const std::string sunset = shpack_io_test::hdri("sunset.exr").string();
+  shpack_io_test::CliRun run = shpack_io_test::run_shpack(dir, {"convert", sunset, "--extract-lights", "4"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json j = nlohmann::json::parse(run.out);
+  ASSERT_TRUE(j["lights"].is_array()) << j.dump();
+  ASSERT_GE(j["lights"].size(), 1u);  // its sun
+  EXPECT_LE(j["lights"].size(), 4u);
+  EXPECT_LE(j["lights"].size(), j["light_candidates"].get<std::size_t>());
+  double before = j["lights"][0]["unity_view_error_before_pct"].get<double>();
+  for (const nlohmann::json& light : j["lights"]) {
+    EXPECT_EQ(light["unity_light"]["quaternion"].size(), 4u);
+    EXPECT_EQ(light["unity_view_error_before_pct"].get<double>(), before);  // each starts where the last ended
+    EXPECT_LT(light["unity_view_error_after_pct"].get<double>(), before);
+    before = light["unity_view_error_after_pct"].get<double>();
+  }
+  EXPECT_FALSE(j.contains("sun"));
+
+  run = shpack_io_test::run_shpack(dir, {"convert", sunset, "--extract-lights", "0"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_FALSE(nlohmann::json::parse(run.out).contains("lights"));  // 0: no extraction asked for
+  run = shpack_io_test::run_shpack(dir, {"convert", sunset, "--extract-lights", "9"});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("--extract-lights"), std::string::npos) << run.err;
+  run = shpack_io_test::run_shpack(dir, {"convert", sunset, "--extract-lights", "2", "--extract-sun"});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  const std::string f = shpack_io_test::hdri("studio.exr").string();
+  run = shpack_io_test::run_shpack(dir, {"convert", "--faces", f, f, f, f, f, f, "--extract-lights", "1"});
   EXPECT_EQ(run.exit_code, 2) << run.err;  // equirect maps only
 }
 

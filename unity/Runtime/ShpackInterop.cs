@@ -1,8 +1,8 @@
 // ShpackInterop.cs - the structs and functions of shpack's C ABI (lib/include/shpack/shpack_c.h),
 // mirrored field for field for P/Invoke. The header fixes every layout on 64-bit platforms
 // with no hidden padding except shpack_result's 4 tail bytes, which Sequential layout adds
-// too (the struct is 8-byte aligned); the library refuses a struct_size that is not its own
-// sizeof, so a wrong mirror fails loudly rather than reading garbage.
+// too (the struct is 8-byte aligned); the library refuses a struct_size that is neither its
+// own sizeof nor its first release's, so a wrong mirror fails loudly rather than reading garbage.
 using System;
 using System.Runtime.InteropServices;
 
@@ -55,6 +55,7 @@ namespace Shpack
             [MarshalAs(UnmanagedType.LPStr)] public string method;
             [MarshalAs(UnmanagedType.LPStr)] public string window;
             public int extractSun, l1;
+            public uint extractLights, reserved;
         }
 
         [StructLayout(LayoutKind.Sequential)]
@@ -86,12 +87,31 @@ namespace Shpack
         }
 
         [StructLayout(LayoutKind.Sequential)]
+        public struct ViewError
+        {
+            public double maxPct, rmsPct, boundPct;
+            public uint directions, reserved;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct ExtractedLight
+        {
+            public Light light;
+            public double errorBeforePct, errorAfterPct;
+        }
+
+        public const int MaxExtractedLights = 8;  // SHPACK_MAX_EXTRACTED_LIGHTS
+
+        [StructLayout(LayoutKind.Sequential)]
         public struct Conversion
         {
             public uint structSize;
             public int hasSun;
             public Result sh;
             public Light sun;
+            public ViewError viewError;
+            public uint lightCount, lightCandidates;
+            [MarshalAs(UnmanagedType.ByValArray, SizeConst = MaxExtractedLights)] public ExtractedLight[] lights;
         }
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]

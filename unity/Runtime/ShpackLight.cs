@@ -13,6 +13,9 @@ namespace Shpack
         public double[] Color;       // 3: linear, largest channel 1
         public double[] ColorSrgb;   // 3: the same colour sRGB-encoded, as Light.color holds it
         public double Intensity;     // Color * Intensity = Irradiance / pi
+        // `--extract-lights`: the max error of what Unity shows (ShpackViewError) with the
+        // lights chosen before this one, and with it too; NaN for a sun.
+        public double ErrorBeforePct = double.NaN, ErrorAfterPct = double.NaN;
 
         public Quaternion Rotation()
         {

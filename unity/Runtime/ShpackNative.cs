@@ -133,6 +133,7 @@ namespace Shpack
                 window = options.Window,
                 extractSun = options.ExtractSun ? 1 : 0,
                 l1 = options.L1 ? 1 : 0,
+                extractLights = options.ExtractLights,
             };
         }
 
@@ -156,6 +157,15 @@ namespace Shpack
         static ShpackResult ResultOf(ShpackInterop.Conversion conversion)
         {
             ShpackInterop.Result sh = conversion.sh;
+            var lights = new ShpackLight[conversion.lightCount];
+            for (int k = 0; k < lights.Length; ++k)
+            {
+                ShpackInterop.ExtractedLight extracted = conversion.lights[k];
+                lights[k] = LightOf(extracted.light);
+                lights[k].ErrorBeforePct = extracted.errorBeforePct;
+                lights[k].ErrorAfterPct = extracted.errorAfterPct;
+            }
+            ShpackInterop.ViewError error = conversion.viewError;
             return new ShpackResult
             {
                 RadianceSh = sh.radianceSh,
@@ -165,6 +175,12 @@ namespace Shpack
                 NonFiniteTexels = sh.nonfiniteTexels,
                 NegativeTexels = sh.negativeTexels,
                 Sun = conversion.hasSun == 1 ? LightOf(conversion.sun) : null,
+                Lights = lights,
+                LightCandidates = conversion.lightCandidates,
+                ViewError = new ShpackViewError
+                {
+                    MaxPct = error.maxPct, RmsPct = error.rmsPct, BoundPct = error.boundPct, Directions = error.directions,
+                },
             };
         }
 

@@ -30,6 +30,7 @@ namespace Shpack
         public double RotateDeg;         // yaw about +Y, as Skybox/Panoramic's _Rotation
         public string Window = "none";   // "none", "hanning:W", "lanczos:W", "unity", "sloan", "optimal"
         public bool ExtractSun;          // take the sun out of an equirect map as a light
+        public uint ExtractLights;       // 0..8: up to this many lights taken out (`--extract-lights`)
         public bool L1;                  // band 2 removed, for Light Probe Proxy Volumes
         public ShpackCubeFrame CubeFrame = ShpackCubeFrame.Unity;  // cube layouts only
     }

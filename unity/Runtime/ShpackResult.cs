@@ -13,11 +13,23 @@ namespace Shpack
         public double[] MinEOverPi;    // 3: lowest E/pi over the sphere per channel
         public ulong NonFiniteTexels, NegativeTexels;
         public ShpackLight Sun;        // the extracted sun (ShpackOptions.ExtractSun), or null
+        public ShpackLight[] Lights;   // the lights of ShpackOptions.ExtractLights, in the order chosen
+        public uint LightCandidates;   // how many candidates they were chosen from
+        public ShpackViewError ViewError;  // what Unity shows against the exact E/pi of the map
 
         public SphericalHarmonicsL2 ToSphericalHarmonicsL2()
         {
             return ShpackProbe.FromFloats(UnitySh);
         }
+    }
+
+    // diagnostics.unity_view_error_* of the document (docs/json-format.md): the error of
+    // ShadeSH9 plus every extracted light against the exact E/pi of the input, in percent of
+    // its mean E/pi, at Directions normals; each within BoundPct of the exact error.
+    public sealed class ShpackViewError
+    {
+        public double MaxPct, RmsPct, BoundPct;
+        public uint Directions;
     }
 
     public sealed class ShpackException : Exception

@@ -15,6 +15,7 @@
 // sphere (least squares), with the same mean.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -64,6 +65,7 @@ struct ShDocument {
   bool l1 = false;          // band 2 removed (above)
   std::optional<Matrix3> colour_matrix;  // applied to the input's RGB, if it was not Rec. 709
   bool sun_extraction = false;           // --extract-sun was asked for (light_extraction.h)
+  unsigned light_extraction = 0;         // --extract-lights N was asked for (light_choice.h)
   // The frame the JSON document's radiance_sh is written in (--frame, engine_frame.h);
   // everything else stays in Unity's frame.
   EngineFrame radiance_frame = EngineFrame::Unity;
@@ -71,6 +73,8 @@ struct ShDocument {
   FinishedSh sh;
   ShTexelCounts texels;
   std::optional<FinishedLight> sun;  // the sun found, if any
+  std::vector<ExtractedLight> lights;  // --extract-lights: those chosen, in the order chosen
+  std::size_t light_candidates = 0;    // --extract-lights: how many it chose from
   std::optional<ViewError> view_error;  // what Unity shows against the input (view_error.h)
 };
 

@@ -28,8 +28,9 @@
 //  5. the level around it L_ring (per channel): the solid-angle-weighted mean of every texel,
 //     free or not, from r + kSunRingGapDeg to r + kSunRingGapDeg + kSunRingWidthDeg of c, as
 //     the sun's sky level (light_extraction.h);
-//  6. it must stand out: the seed's Y >= kLightMinContrast Y(L_ring). Since kLightMinContrast
-//     = 1 / kLightThreshold, every texel of the region is at least as bright as its ring;
+//  6. it must stand out: the seed's Y >= Y(L_ring) / kLightThreshold (a contrast of 20). So
+//     every texel of the region is at least as bright as its ring
+//     (LightScale below: the same with another threshold and radius);
 //  7. it must matter: what its removal takes away, sum_t Y(e_t) Omega_t (below), is at least
 //     kLightMinFluxShare of the map's sum_t Y_t Omega_t. A light of share s changes E/pi
 //     nowhere by more than 4 s of its mean (its E/pi is at most its flux / pi, and the mean
@@ -74,10 +75,25 @@ namespace shpack {
 
 inline constexpr double kLightThreshold = 0.05;                  // of the seed's luminance, step 2
 inline constexpr double kLightMaxRadiusDeg = 12.0;               // step 3: a window ~20 degrees across
-inline constexpr double kLightMinContrast = 1 / kLightThreshold;  // step 6
 inline constexpr double kLightMinFluxShare = 0.0005;             // step 7: 0.05%
 inline constexpr std::size_t kLightMaxSeeds = 256;               // step 1
 inline constexpr std::size_t kLightCandidateCount = 16;          // what a caller asks for by default
+
+// The scale of one search: step 2's threshold (step 6's contrast being its inverse, so that
+// every texel of a region is at least as bright as its ring) and step 3's largest radius.
+// The defaults are the constants above.
+struct LightScale {
+  double threshold = kLightThreshold;
+  double max_radius_deg = kLightMaxRadiusDeg;
+};
+
+// The scales `--extract-lights` searches at (pipeline.h), each on the whole map, their
+// candidates pooled for one choice (light_choice.h, which never takes two that share a texel):
+// a threshold of 5 % keeps a source's soft halo with it, 10 % and 20 % split a bright cluster
+// (a softbox beside its reflection, a lamp on a lit wall) into the parts Unity's lights show
+// best; regions up to 25 degrees take in a window or a patch of sky. Measured on the bundled
+// maps (docs/accuracy.md), each scale is the best one on some map.
+inline constexpr std::array<LightScale, 3> kLightChoiceScales = {{{0.05, 25.0}, {0.1, 25.0}, {0.2, 25.0}}};
 
 // A texel of the map: column x from the left, row y from the top.
 struct LightTexel {
@@ -98,10 +114,13 @@ struct LightCandidate {
 
 // Finds up to max_candidates candidates of an equirect view (resolve_view is applied) of F32
 // texels (1 channel grey, or R, G, B first) into `candidates` (cleared first), in the order
-// found. The map is only read.
+// found, with the threshold and largest radius of `scale`. The map is only read.
 // Errors: BadView (resolve_view), InvalidArgument for a view that is not F32, OutOfMemory.
 Status find_light_candidates(const ImageView& image, const SunSearch& search, std::size_t max_candidates,
-                             std::vector<LightCandidate>& candidates) noexcept;
+                             std::vector<LightCandidate>& candidates, const LightScale& scale = {}) noexcept;
+
+// True when the two candidates share a texel (their texels are row-major, as found).
+bool share_a_texel(const LightCandidate& a, const LightCandidate& b) noexcept;
 
 // Sets the texels of candidates[k] for every k in `chosen` to its fill level in `pixels`, the
 // writable packed memory the view points into (as extract_sun), so that the projector sees the

@@ -7,15 +7,17 @@
 // with the candidates `chosen` (indices into the candidates, in the order chosen) taken out.
 //
 // The choice: e_0 = error_of({}); then, while fewer than max_lights are chosen, every
-// candidate not yet chosen is tried as the next one, and the one giving the smallest error is
+// candidate not yet chosen and sharing no texel with a chosen one (candidates pooled from
+// searches at several scales overlap; those of one search never do) is tried as the next one, and the one giving the smallest error is
 // chosen if that error is below the current one (strictly: a light that does not lower the
 // error is never added); among equal errors the lowest index wins (candidates come brightest
 // seed first). It stops when no candidate lowers the error, when max_lights are chosen or when
 // none is left. Deterministic: the same measure gives the same choice.
 //
-// Cost: 1 + sum_{s < n} (K - s) calls of error_of for K candidates, N = max_lights and
+// Cost: at most 1 + sum_{s < n} (K - s) calls of error_of for K candidates, N = max_lights and
 // n <= min(N, K) steps: at most 1 + K N, and at most K N when K >= 1 and N >= 2 (the sum
-// is then at most K N - N (N - 1)/2). Nothing else is costly: the candidates carry what the
+// is then at most K N - N (N - 1)/2), and K^2 comparisons of two candidates' texel lists
+// (linear in their lengths) as lights are chosen. Nothing else is costly: the candidates carry what the
 // measure needs (light_candidates.h), so the map is not read again.
 #pragma once
 

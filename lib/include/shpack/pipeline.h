@@ -5,8 +5,9 @@
 //   1. source      which pixels: file or faces, part/layer, data window, colour space and
 //                  layout, resolved once (lib/io's map source for files; the caller's views
 //                  here). Result: a MapImage and FinishOptions::colour_matrix.
-//   2. transforms  --extract-sun: image in, image + light out (light_extraction.h). Needs
-//                  the whole image, writable.
+//   2. transforms  --extract-sun, --extract-lights N: image in, image + lights out
+//                  (light_extraction.h; light_candidates.h and light_choice.h, the choice
+//                  measured by stage 4 and view_error.h). Needs the whole image, writable.
 //   3. projector   one, chosen by ConvertOptions::method: the closed-form rules of every
 //                  layout (project.h, project_cube.h, project_sphere_map.h) or the sampling
 //                  rules of other tools on equirect maps (sampling_methods.h). The value
@@ -27,13 +28,16 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "shpack/colorspace.h"
 #include "shpack/conventions.h"
 #include "shpack/cube_layout.h"
 #include "shpack/image_view.h"
 #include "shpack/layout.h"
+#include "shpack/light_choice.h"
 #include "shpack/light_extraction.h"
 #include "shpack/project.h"
 #include "shpack/rotate.h"
@@ -102,28 +106,52 @@ Status check_finish_options(const FinishOptions& options) noexcept;
 
 // ---- The whole pipeline ---------------------------------------------------------------
 
+inline constexpr unsigned kMaxExtractedLights = 8;  // --extract-lights N: 0 <= N <= this
+
 struct ConvertOptions {
   MethodSpec method;                      // stage 3 (validate_method)
   NonFinite nonfinite = NonFinite::Error; // stage 3
   Negative negative = Negative::Keep;     // stage 3
   unsigned threads = 1;                   // stage 3; 0 = all cores
   bool extract_sun = false;               // stage 2
+  unsigned extract_lights = 0;            // stage 2: at most this many lights (light_choice.h)
   FinishOptions finish;                   // stage 4
+};
+
+// What stage 2 took out of the map, in the map's frame and colours (unfinished).
+struct Extraction {
+  std::optional<SunLight> sun;     // --extract-sun found one
+  std::vector<SunLight> lights;    // --extract-lights: the lights chosen, in the order chosen
+  LightChoice choice;              // and how each lowered the error (light_choice.h)
+  std::size_t candidates = 0;      // how many candidates were found (light_candidates.h)
+};
+
+// A light of --extract-lights, finished, with the max error of what Unity shows (view_error.h)
+// with the lights chosen before it, and with it too.
+struct ExtractedLight {
+  FinishedLight light;
+  double error_before_pct = 0, error_after_pct = 0;
 };
 
 struct Conversion {
   ProjectStats stats;                 // what the projector saw (sampling methods: their reads)
   FinishedSh sh;
   std::optional<FinishedLight> sun;   // extract_sun found one
+  std::vector<ExtractedLight> lights; // extract_lights: those chosen, in the order chosen
+  std::size_t light_candidates = 0;   // extract_lights: how many were found to choose from
   // What Unity shows against the exact E/pi of the input (view_error.h); absent only when
   // finish_conversion was given no reference.
   std::optional<ViewError> view_error;
 };
 
 // The checks that need no pixels: the method's parameter (validate_method), the finish
-// options, a sampling method or --extract-sun on a layout other than equirect, a cube frame
+// options, a sampling method, --extract-sun or --extract-lights on a layout other than
+// equirect, both extractions at once, more than kMaxExtractedLights lights, a cube frame
 // other than Unity on a layout that is not a cube. InvalidArgument, naming the option.
 Status check_convert_options(const ConvertOptions& options, Layout layout, CubeFrame cube_frame) noexcept;
+
+// True when stage 2 runs: it needs the whole image, writable (MapImage::writable).
+bool needs_transform(const ConvertOptions& options) noexcept;
 
 // True when stage 3 can take the map in bands of rows (EquirectProjector), so that the
 // source never holds the whole image: exact or center on an equirect map, no transform.
@@ -142,9 +170,20 @@ Status apply_nonfinite_policy(const ProjectStats& stats, NonFinite policy) noexc
 Status convert_map(const MapImage& map, const ConvertOptions& options, Conversion& out,
                    ProjectStats* seen = nullptr) noexcept;
 
-// Stage 4 on a projection made elsewhere (the streamed path): the SH and the light, and the
-// view error against `reference` (view_error.h), sampled from the input before any transform.
-Status finish_conversion(const ShL2& projected, const ProjectStats& stats, const std::optional<SunLight>& sun,
+// Stage 2 on a whole equirect map: the sun or the lights the options ask for are found and
+// their texels set to their fill levels in map.writable. The lights of extract_lights are
+// chosen by choose_lights (light_choice.h) among the candidates of a search at each of
+// kLightChoiceScales (up to kLightCandidateCount each, light_candidates.h), the
+// measure being the max error (view_error.h, against `reference`, the input before any
+// transform) of stage 4 on the exact projection of the map less the candidates' removed SH,
+// with their finished lights. Nothing is written when it fails.
+Status extract_from_map(const MapImage& map, const ConvertOptions& options, const ViewSamples& reference,
+                        Extraction& out) noexcept;
+
+// Stage 4 on a projection made elsewhere (the streamed path, with no extraction) or by
+// convert_map: the SH and the lights, and the view error against `reference`
+// (view_error.h), sampled from the input before any transform.
+Status finish_conversion(const ShL2& projected, const ProjectStats& stats, const Extraction& extraction,
                          const FinishOptions& options, const ViewSamples* reference, Conversion& out) noexcept;
 
 // The reference E/pi (view_reference.h) of a whole map of any layout, under the projector's

@@ -8,7 +8,8 @@
  * What it computes is what `shpack convert` computes for a map held in memory (docs/json-format.md,
  * docs/conventions.md, docs/layouts.md): radiance coefficients in Unity's frame, the 27 floats
  * of a UnityEngine.Rendering.SphericalHarmonicsL2, the seven shader vectors
- * unity_SHAr..unity_SHC, the minimum of E/pi per channel and the extracted sun,
+ * unity_SHAr..unity_SHC, the minimum of E/pi per channel, the extracted sun or lights and the
+ * error of what Unity shows against the exact E/pi of the map (its view error),
  * bit-identical to the CLI's JSON for the same texels and options (pipeline.h).
  * shpack_convert takes every layout and option of `convert`; shpack_convert_equirect and the
  * projector are the first version's equirect-only calls, kept as they were.
@@ -152,6 +153,9 @@ typedef struct shpack_convert_options {
   const char* window;   /* as `--window`; NULL = "none" */
   int32_t extract_sun;  /* 1: take the sun out of an equirect map as a light (`--extract-sun`) */
   int32_t l1;           /* 1: band 2 removed, for Light Probe Proxy Volumes (`--l1`) */
+  /* Appended after the first release (a caller whose struct_size ends before them gets 0s): */
+  uint32_t extract_lights; /* 0..8: up to this many lights taken out (`--extract-lights`); 0 with extract_sun */
+  uint32_t reserved;       /* 0 */
 } shpack_convert_options;
 
 /* A light taken out of the map, in the output's frame and colours (the JSON's "sun"). */
@@ -170,11 +174,33 @@ typedef struct shpack_light {
   double intensity;     /* color * intensity = irradiance / pi */
 } shpack_light;
 
+/* What Unity shows against the exact E/pi of the input, in percent of its mean E/pi
+ * (docs/json-format.md, diagnostics.unity_view_error_*): the packed shader vectors plus every
+ * extracted light, at `directions` spherical Fibonacci normals. */
+typedef struct shpack_view_error {
+  double max_pct, rms_pct, bound_pct; /* each error is within bound_pct of the exact one */
+  uint32_t directions, reserved;
+} shpack_view_error;
+
+/* A light of extract_lights, with the max error of what Unity shows with the lights chosen
+ * before it and with it too (error_after_pct < error_before_pct). */
+typedef struct shpack_extracted_light {
+  shpack_light light;
+  double error_before_pct, error_after_pct;
+} shpack_extracted_light;
+
+#define SHPACK_MAX_EXTRACTED_LIGHTS 8
+
 typedef struct shpack_conversion {
   uint32_t struct_size; /* set by the caller: sizeof(shpack_conversion) */
   int32_t has_sun;      /* 1 when extract_sun found a sun: `sun` holds it (else zeros) */
   shpack_result sh;
   shpack_light sun;
+  /* Appended after the first release (not written for a caller whose struct_size ends before them): */
+  shpack_view_error view_error;
+  uint32_t light_count;      /* lights[0 .. light_count - 1] hold the lights extracted, in the order chosen */
+  uint32_t light_candidates; /* how many candidates they were chosen from */
+  shpack_extracted_light lights[SHPACK_MAX_EXTRACTED_LIGHTS];
 } shpack_conversion;
 
 /* The library's ABI version (SHPACK_C_ABI_VERSION when it was built) and version text. */
@@ -207,7 +233,9 @@ SHPACK_C_API int32_t shpack_convert(const shpack_map* map, const shpack_convert_
 
 /* Streaming, for images that do not fit in memory: create with the full size, add bands of
  * consecutive rows from the top (any heights), finish once, destroy. Memory is bounded by
- * the caller's band. The result equals shpack_convert_equirect's on the whole image. */
+ * the caller's band. The result equals shpack_convert_equirect's on the whole image, and
+ * shpack_projector_view_error, after a successful finish, gives its view error, equal to
+ * shpack_convert's. */
 typedef struct shpack_projector shpack_projector;
 SHPACK_C_API int32_t shpack_projector_create(uint32_t width, uint32_t height, const shpack_options* options,
                                              shpack_projector** projector, shpack_error* error);
@@ -215,6 +243,8 @@ SHPACK_C_API int32_t shpack_projector_add_rows(shpack_projector* projector, cons
                                                uint32_t first_row, shpack_error* error);
 SHPACK_C_API int32_t shpack_projector_finish(shpack_projector* projector, shpack_result* result,
                                              shpack_error* error);
+SHPACK_C_API int32_t shpack_projector_view_error(const shpack_projector* projector, shpack_view_error* view_error,
+                                                 shpack_error* error);
 SHPACK_C_API void shpack_projector_destroy(shpack_projector* projector); /* NULL is allowed */
 
 /* Unity's ShadeSH9 (SHEvalLinearL0L1 + SHEvalLinearL2), in float, from the 28 shader floats,

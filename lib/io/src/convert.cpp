@@ -68,7 +68,7 @@ IoStatus run_stages(MapSource& source, const ConvertSettings& settings, Conversi
     ViewSamples samples;
     if (IoStatus st = project_streamed(source, options, radiance, stats, samples); !st.ok()) return st;
     if (!apply_nonfinite_policy(stats, options.nonfinite).ok()) return nonfinite_error(source, stats, options.method);
-    if (Status st = finish_conversion(radiance, stats, std::nullopt, options.finish, &samples, out); !st.ok())
+    if (Status st = finish_conversion(radiance, stats, Extraction{}, options.finish, &samples, out); !st.ok())
       return core_error(path, st);
     return IoStatus::success();
   }

@@ -51,6 +51,12 @@ std::vector<std::string> provenance_lines(const ShDocument& doc) {
                                   " towards it; its Unity directional light is in the JSON form"
                             : "--extract-sun: no sun found, the map is whole");
   }
+  if (doc.light_extraction > 0) {  // the lights are in the JSON document only (light_choice.h)
+    std::string line = "lights removed (--extract-lights ";
+    line.append(std::to_string(doc.light_extraction)).append("): ").append(std::to_string(doc.lights.size()));
+    line.append(" of ").append(std::to_string(doc.light_candidates));
+    lines.push_back(line.append(" candidates; their Unity directional lights are in the JSON form"));
+  }
   return lines;
 }
 

@@ -13,7 +13,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;  // keeps keys in insertion order
 
-// The sun of --extract-sun (light_extraction.h): what was removed, and the Unity light that
+// The sun of --extract-sun (light_extraction.h), or a light of --extract-lights: what was removed, and the Unity light that
 // replaces it (unity_light.h).
 Json sun_json(const FinishedLight& sun) {
   const SunLight& light = sun.light;
@@ -91,6 +91,17 @@ std::string to_json(const ShDocument& doc) {
   }
   j["diagnostics"] = std::move(diagnostics);
   if (doc.sun_extraction) j["sun"] = doc.sun ? sun_json(*doc.sun) : Json(nullptr);  // null: no sun found
+  if (doc.light_extraction > 0) {  // --extract-lights: every light chosen, each a sun record
+    j["light_candidates"] = doc.light_candidates;
+    Json lights = Json::array();
+    for (const ExtractedLight& light : doc.lights) {
+      Json record = sun_json(light.light);
+      record["unity_view_error_before_pct"] = light.error_before_pct;
+      record["unity_view_error_after_pct"] = light.error_after_pct;
+      lights.push_back(std::move(record));
+    }
+    j["lights"] = std::move(lights);
+  }
   // A file name need not be UTF-8 on Linux: replace bad bytes rather than fail.
   return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }

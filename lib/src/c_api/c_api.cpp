@@ -14,6 +14,7 @@ struct shpack_projector {
   shpack::ViewReference reference;  // the truth that the result's view error is measured against
   shpack::FinishOptions finish;
   bool finished = false;
+  shpack_view_error view_error{};  // of the finished result
 };
 
 namespace {
@@ -129,9 +130,19 @@ int32_t shpack_projector_finish(shpack_projector* projector, shpack_result* resu
   if (Status st = projector->reference.finish(); !st.ok()) return report(st, error);
   if (Status st = shpack::sample_view_reference(projector->reference, samples); !st.ok()) return report(st, error);
   shpack::Conversion conversion;
-  if (Status st = shpack::finish_conversion(radiance, stats, std::nullopt, projector->finish, &samples, conversion); !st.ok())
+  if (Status st = shpack::finish_conversion(radiance, stats, shpack::Extraction{}, projector->finish, &samples, conversion); !st.ok())
     return report(st, error);
   *result = result_of(conversion);
+  projector->view_error = shpack::c_api::view_error_of(conversion);
+  return report(Status::success(), error);
+}
+
+int32_t shpack_projector_view_error(const shpack_projector* projector, shpack_view_error* view_error,
+                                    shpack_error* error) {
+  if (projector == nullptr || view_error == nullptr) return invalid("projector and view_error must not be NULL", error);
+  if (!projector->finished || projector->view_error.directions == 0)
+    return report(Status::error(Errc::BadSequence, "the projector has not finished"), error);
+  *view_error = projector->view_error;
   return report(Status::success(), error);
 }
 

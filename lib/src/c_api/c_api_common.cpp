@@ -76,4 +76,15 @@ shpack_result result_of(const Conversion& conversion) {
   return out;
 }
 
+shpack_view_error view_error_of(const Conversion& conversion) {
+  shpack_view_error out{};
+  if (const std::optional<ViewError>& e = conversion.view_error) {
+    out.max_pct = e->max_pct;
+    out.rms_pct = e->rms_pct;
+    out.bound_pct = e->bound_pct;
+    out.directions = static_cast<uint32_t>(kViewErrorDirections);
+  }
+  return out;
+}
+
 }  // namespace shpack::c_api

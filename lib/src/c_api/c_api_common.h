@@ -24,4 +24,7 @@ Status to_policies(int32_t nonfinite, int32_t negative, ConvertOptions& out);
 // The SH record of a conversion.
 shpack_result result_of(const Conversion& conversion);
 
+// Its view error (view_error.h); zeros when it has none.
+shpack_view_error view_error_of(const Conversion& conversion);
+
 }  // namespace shpack::c_api

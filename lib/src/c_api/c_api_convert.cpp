@@ -4,6 +4,7 @@
 // pixels), and the Conversion back into C structs.
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <new>
@@ -47,11 +48,14 @@ Status to_convert_options(const shpack_convert_options& options, shpack::Convert
   }
   if ((options.extract_sun != 0 && options.extract_sun != 1) || (options.l1 != 0 && options.l1 != 1))
     return Status::error(Errc::InvalidArgument, "extract_sun and l1 must be 0 or 1");
+  if (options.extract_lights > SHPACK_MAX_EXTRACTED_LIGHTS)
+    return Status::error(Errc::InvalidArgument, "extract_lights must be 0 to SHPACK_MAX_EXTRACTED_LIGHTS");
   const double factor = options.intensity * std::exp2(options.exposure_ev);
   if (!std::isfinite(factor))
     return Status::error(Errc::InvalidArgument, "intensity times 2^exposure_ev is not a finite number");
   result.threads = options.threads;
   result.extract_sun = options.extract_sun == 1;
+  result.extract_lights = options.extract_lights;
   result.finish.intensity = factor;
   result.finish.rotate_deg = options.rotate_deg;
   result.finish.l1 = options.l1 == 1;
@@ -79,7 +83,7 @@ Status packed_copy(const shpack::ImageView& view, std::vector<float>& pixels) {
   try {
     pixels.resize(row * view.height);
   } catch (const std::bad_alloc&) {
-    return Status::error(Errc::OutOfMemory, "cannot allocate a copy of the image for extract_sun");
+    return Status::error(Errc::OutOfMemory, "cannot allocate a copy of the image for extract_sun or extract_lights");
   }
   for (std::uint32_t y = 0; y < view.height; ++y) {
     for (std::uint32_t x = 0; x < view.width; ++x) {
@@ -152,9 +156,38 @@ shpack_light light_of(const shpack::FinishedLight& finished) {
   return out;
 }
 
+// The sizes of the structs before members were appended (shpack_c.h): an older caller's.
+constexpr uint32_t kFirstOptionsSize = offsetof(shpack_convert_options, extract_lights);
+constexpr uint32_t kFirstConversionSize = offsetof(shpack_conversion, view_error);
+
 bool sizes_match(const shpack_map& map, const shpack_convert_options& options, const shpack_conversion& out) {
-  return map.struct_size == sizeof(shpack_map) && options.struct_size == sizeof(shpack_convert_options) &&
-         out.struct_size == sizeof(shpack_conversion);
+  return map.struct_size == sizeof(shpack_map) &&
+         (options.struct_size == sizeof(shpack_convert_options) || options.struct_size == kFirstOptionsSize) &&
+         (out.struct_size == sizeof(shpack_conversion) || out.struct_size == kFirstConversionSize);
+}
+
+// The caller's options, the members its struct_size does not hold read as 0.
+shpack_convert_options options_of(const shpack_convert_options& caller) {
+  shpack_convert_options options{};
+  std::memcpy(&options, &caller, caller.struct_size);
+  return options;
+}
+
+// The result for a caller whose struct ends at `size`: the members past it are not written.
+void write_conversion(const shpack::Conversion& conversion, uint32_t size, shpack_conversion& out) {
+  shpack_conversion result{};
+  result.struct_size = size;
+  result.sh = shpack::c_api::result_of(conversion);
+  result.has_sun = conversion.sun.has_value() ? 1 : 0;
+  if (conversion.sun) result.sun = light_of(*conversion.sun);
+  result.view_error = shpack::c_api::view_error_of(conversion);
+  result.light_count = static_cast<uint32_t>(conversion.lights.size());
+  result.light_candidates = static_cast<uint32_t>(conversion.light_candidates);
+  for (std::size_t k = 0; k < conversion.lights.size(); ++k) {
+    const shpack::ExtractedLight& light = conversion.lights[k];
+    result.lights[k] = {light_of(light.light), light.error_before_pct, light.error_after_pct};
+  }
+  std::memcpy(&out, &result, size);
 }
 
 }  // namespace
@@ -164,7 +197,7 @@ extern "C" {
 void shpack_default_convert_options(shpack_convert_options* options) {
   if (options != nullptr)
     *options = {sizeof(shpack_convert_options), SHPACK_NONFINITE_ERROR, SHPACK_NEGATIVE_KEEP, 0, 1.0, 0.0, 0.0,
-                nullptr, nullptr, 0, 0};
+                nullptr, nullptr, 0, 0, 0, 0};
 }
 
 int32_t shpack_convert(const shpack_map* map, const shpack_convert_options* options, shpack_conversion* out,
@@ -175,18 +208,14 @@ int32_t shpack_convert(const shpack_map* map, const shpack_convert_options* opti
     return invalid("struct_size must be the sizeof of shpack_map, shpack_convert_options and shpack_conversion",
                    error);
   shpack::ConvertOptions convert;
-  if (Status st = to_convert_options(*options, convert); !st.ok()) return report(st, error);
+  if (Status st = to_convert_options(options_of(*options), convert); !st.ok()) return report(st, error);
   shpack::MapImage image;
   std::vector<float> copy;
-  if (Status st = to_map_image(*map, convert.extract_sun, image, copy); !st.ok()) return report(st, error);
+  if (Status st = to_map_image(*map, shpack::needs_transform(convert), image, copy); !st.ok())
+    return report(st, error);
   shpack::Conversion conversion;
   if (Status st = shpack::convert_map(image, convert, conversion); !st.ok()) return report(st, error);
-  shpack_conversion result{};
-  result.struct_size = sizeof(shpack_conversion);
-  result.sh = shpack::c_api::result_of(conversion);
-  result.has_sun = conversion.sun.has_value() ? 1 : 0;
-  if (conversion.sun) result.sun = light_of(*conversion.sun);
-  *out = result;
+  write_conversion(conversion, out->struct_size, *out);
   return report(Status::success(), error);
 }
 

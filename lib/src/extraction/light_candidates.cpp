@@ -92,8 +92,8 @@ void measure_removal(const EquirectTexels& texels, const SunSearch& search, cons
 // One search over a map (light_candidates.h); may throw std::bad_alloc.
 class CandidateSearch {
  public:
-  CandidateSearch(const ImageView& image, const SunSearch& search)
-      : texels_(image, search), search_(search), mean_(mean_luminance(texels_)), free_(texels_) {}
+  CandidateSearch(const ImageView& image, const SunSearch& search, const LightScale& scale)
+      : texels_(image, search), search_(search), scale_(scale), mean_(mean_luminance(texels_)), free_(texels_) {}
   CandidateSearch(const CandidateSearch&) = delete;
   CandidateSearch& operator=(const CandidateSearch&) = delete;
 
@@ -125,8 +125,8 @@ class CandidateSearch {
   // than twice the largest radius from the seed. Every texel it reaches is taken.
   std::optional<std::vector<LightTexel>> grow(const FreeTexels::Seed& seed) {
     const Dir3 from = texels_.centre(seed.texel.x, seed.texel.y);
-    const double cos_reach = std::cos(2 * kLightMaxRadiusDeg * kDegree);
-    const double threshold = kLightThreshold * seed.luminance;
+    const double cos_reach = std::cos(2 * scale_.max_radius_deg * kDegree);
+    const double threshold = scale_.threshold * seed.luminance;
     std::vector<LightTexel> region = {seed.texel};
     free_.take(seed.texel);
     bool far = false;
@@ -149,10 +149,10 @@ class CandidateSearch {
 
   // Steps 3 to 6 on a grown region, step 4 adding to it.
   std::optional<Judged> judge(const FreeTexels::Seed& seed, std::vector<LightTexel>& region) {
-    const double largest = kLightMaxRadiusDeg * kDegree;
+    const double largest = scale_.max_radius_deg * kDegree;
     Extent extent = region_extent(texels_, region);
     if (extent.radius > largest) return std::nullopt;
-    const double threshold = kLightThreshold * seed.luminance;
+    const double threshold = scale_.threshold * seed.luminance;
     texels_.within(extent.centre, ring_inner(extent), [&](std::uint32_t x, std::uint32_t y, double) {
       if (!free_.free({x, y}) || texels_.luminance(x, y) < threshold) return;
       free_.take({x, y});
@@ -161,7 +161,8 @@ class CandidateSearch {
     extent = region_extent(texels_, region);
     if (extent.radius > largest) return std::nullopt;
     const detail::RingLevel ring = detail::ring_level(texels_, extent.centre, ring_inner(extent), ring_outer(extent));
-    if (!(ring.solid > 0) || seed.luminance < kLightMinContrast * texels_.luminance(ring.level)) return std::nullopt;
+    // Step 6, with the contrast 1 / threshold.
+    if (!(ring.solid > 0) || seed.luminance * scale_.threshold < texels_.luminance(ring.level)) return std::nullopt;
     return Judged{extent, ring};
   }
 
@@ -185,6 +186,7 @@ class CandidateSearch {
 
   EquirectTexels texels_;
   SunSearch search_;
+  LightScale scale_;
   double mean_;
   FreeTexels free_;  // refers to texels_
 };
@@ -192,18 +194,33 @@ class CandidateSearch {
 }  // namespace
 
 Status find_light_candidates(const ImageView& image, const SunSearch& search, std::size_t max_candidates,
-                             std::vector<LightCandidate>& candidates) noexcept {
+                             std::vector<LightCandidate>& candidates, const LightScale& scale) noexcept {
   ImageView view = image;
   if (Status st = resolve_view(view); !st.ok()) return st;
   if (view.type != PixelType::F32)
     return Status::error(Errc::InvalidArgument, "the light search reads float texels");
   try {
     candidates.clear();
-    if (max_candidates > 0) candidates = CandidateSearch(view, search).run(max_candidates);
+    if (max_candidates > 0) candidates = CandidateSearch(view, search, scale).run(max_candidates);
     return Status::success();
   } catch (const std::bad_alloc&) {
     return Status::error(Errc::OutOfMemory, "cannot allocate the light search's texel marks or a region");
   }
+}
+
+bool share_a_texel(const LightCandidate& a, const LightCandidate& b) noexcept {
+  const auto row_major = [](const LightTexel& s, const LightTexel& t) { return s.y != t.y ? s.y < t.y : s.x < t.x; };
+  auto i = a.texels.begin(), j = b.texels.begin();
+  while (i != a.texels.end() && j != b.texels.end()) {
+    if (row_major(*i, *j)) {
+      ++i;
+    } else if (row_major(*j, *i)) {
+      ++j;
+    } else {
+      return true;
+    }
+  }
+  return false;
 }
 
 Status remove_light_candidates(const ImageView& image, float* pixels, std::span<const LightCandidate> candidates,

@@ -17,9 +17,11 @@ Status measure(const LightErrorMeasure& error_of, std::span<const std::size_t> c
 }
 
 // The greedy steps of light_choice.h; may throw std::bad_alloc (the chosen set).
-Status choose(std::size_t count, std::size_t max_lights, const LightErrorMeasure& error_of, LightChoice& choice) {
+Status choose(std::span<const LightCandidate> candidates, std::size_t max_lights, const LightErrorMeasure& error_of,
+              LightChoice& choice) {
+  const std::size_t count = candidates.size();
   if (Status st = measure(error_of, {}, choice, choice.error_without); !st.ok()) return st;
-  const std::size_t steps = std::min(max_lights, count);
+  const std::size_t steps = std::min(max_lights, count);  // at most
   std::vector<std::size_t> trial;  // the chosen ones, then the one tried
   trial.reserve(steps);
   std::vector<bool> taken(count, false);
@@ -37,7 +39,8 @@ Status choose(std::size_t count, std::size_t max_lights, const LightErrorMeasure
     }
     if (best == count) break;
     trial.back() = best;
-    taken[best] = true;
+    for (std::size_t k = 0; k < count; ++k)  // itself, and every candidate sharing a texel with it
+      if (!taken[k]) taken[k] = k == best || share_a_texel(candidates[best], candidates[k]);
     choice.lights.push_back({best, current, best_error});
     current = best_error;
   }
@@ -51,7 +54,7 @@ Status choose_lights(std::span<const LightCandidate> candidates, std::size_t max
   choice = {};
   try {
     choice.lights.reserve(std::min(max_lights, candidates.size()));
-    return choose(candidates.size(), max_lights, error_of, choice);
+    return choose(candidates, max_lights, error_of, choice);
   } catch (const std::bad_alloc&) {
     return Status::error(Errc::OutOfMemory, "cannot allocate the chosen lights");
   }

@@ -1,7 +1,7 @@
-// convert_map.cpp - stages 2 and 3 of the pipeline (pipeline.h) on a whole image, and the
-// checks that decide which stages run.
-#include <span>
-#include <string>
+// convert_map.cpp - stages 3 and 4 of the pipeline (pipeline.h) on a whole image, after stage 2
+// (extraction.cpp), and the checks that decide which stages run.
+#include <new>
+#include <vector>
 
 #include "shpack/pipeline.h"
 #include "shpack/project_cube.h"
@@ -46,19 +46,6 @@ Status project(const MapImage& map, const ConvertOptions& options, ShL2& radianc
   return Status::success();
 }
 
-// Stage 2: the transforms the options ask for.
-Status transform(const MapImage& map, const ConvertOptions& options, std::optional<SunLight>& sun) noexcept {
-  if (!options.extract_sun) return Status::success();
-  // Y = w . (M rgb) = (M^T w) . rgb: the luminance of the output primaries (light_extraction.h).
-  SunSearch search{kRec709Luminance, options.negative};
-  if (const std::optional<Matrix3>& m = options.finish.colour_matrix) {
-    for (int j = 0; j < 3; ++j)
-      search.luminance[j] = kRec709Luminance[0] * (*m)[0][j] + kRec709Luminance[1] * (*m)[1][j] +
-                            kRec709Luminance[2] * (*m)[2][j];
-  }
-  return extract_sun(map.image, map.writable, search, sun);
-}
-
 }  // namespace
 
 Status check_convert_options(const ConvertOptions& options, Layout layout, CubeFrame cube_frame) noexcept {
@@ -70,6 +57,13 @@ Status check_convert_options(const ConvertOptions& options, Layout layout, CubeF
     return Status::error(Errc::InvalidArgument, "the sampling methods read equirect maps only; use exact or center");
   if (options.extract_sun && layout != Layout::Equirect)
     return Status::error(Errc::InvalidArgument, "--extract-sun reads equirect maps only");
+  if (options.extract_lights > 0 && layout != Layout::Equirect)
+    return Status::error(Errc::InvalidArgument, "--extract-lights reads equirect maps only");
+  if (options.extract_lights > kMaxExtractedLights)
+    return Status::error(Errc::InvalidArgument, "--extract-lights takes at most 8 lights");
+  if (options.extract_sun && options.extract_lights > 0)
+    return Status::error(Errc::InvalidArgument,
+                         "--extract-sun and --extract-lights exclude each other (the sun is --extract-lights' first)");
   if (is_sphere_map(layout) && options.method.method != SamplingMethod::Exact)
     return Status::error(Errc::InvalidArgument, "octahedral, angular and mirror ball maps are projected with exact only");
   if (cube_frame != CubeFrame::Unity && !is_cube_layout(layout))
@@ -77,8 +71,12 @@ Status check_convert_options(const ConvertOptions& options, Layout layout, CubeF
   return Status::success();
 }
 
+bool needs_transform(const ConvertOptions& options) noexcept {
+  return options.extract_sun || options.extract_lights > 0;
+}
+
 bool streams_rows(const ConvertOptions& options, Layout layout) noexcept {
-  return layout == Layout::Equirect && !options.extract_sun &&
+  return layout == Layout::Equirect && !needs_transform(options) &&
          (options.method.method == SamplingMethod::Exact || options.method.method == SamplingMethod::Center);
 }
 
@@ -94,8 +92,10 @@ Status convert_map(const MapImage& map, const ConvertOptions& options, Conversio
   // The truth is the input as it is, before any transform takes a light out of it.
   ViewSamples reference;
   if (Status st = sample_map_reference(map, options, reference); !st.ok()) return st;
-  std::optional<SunLight> sun;
-  if (Status st = transform(map, options, sun); !st.ok()) return st;
+  Extraction extraction;
+  if (needs_transform(options)) {
+    if (Status st = extract_from_map(map, options, reference, extraction); !st.ok()) return st;
+  }
   ShL2 radiance;
   ProjectStats stats;
   if (Status st = project(map, options, radiance, stats); !st.ok()) return st;
@@ -103,23 +103,35 @@ Status convert_map(const MapImage& map, const ConvertOptions& options, Conversio
     if (seen != nullptr) *seen = stats;
     return st;
   }
-  return finish_conversion(radiance, stats, sun, options.finish, &reference, out);
+  return finish_conversion(radiance, stats, extraction, options.finish, &reference, out);
 }
 
-Status finish_conversion(const ShL2& projected, const ProjectStats& stats, const std::optional<SunLight>& sun,
+Status finish_conversion(const ShL2& projected, const ProjectStats& stats, const Extraction& extraction,
                          const FinishOptions& options, const ViewSamples* reference, Conversion& out) noexcept {
-  Conversion result;
-  result.stats = stats;
-  if (Status st = finish_projection(projected, options, result.sh); !st.ok()) return st;
-  if (sun) result.sun = finish_light(*sun, options);
-  if (reference != nullptr) {
-    const std::span<const UnitySunLight> lights =
-        result.sun ? std::span<const UnitySunLight>(&result.sun->unity, 1) : std::span<const UnitySunLight>();
-    const ViewTransform transform{options.colour_matrix, options.intensity, options.rotate_deg};
-    result.view_error = unity_view_error(*reference, transform, result.sh.shader, lights);
+  try {
+    Conversion result;
+    result.stats = stats;
+    if (Status st = finish_projection(projected, options, result.sh); !st.ok()) return st;
+    std::vector<UnitySunLight> shown;  // every light Unity lights the scene with
+    if (extraction.sun) {
+      result.sun = finish_light(*extraction.sun, options);
+      shown.push_back(result.sun->unity);
+    }
+    for (std::size_t k = 0; k < extraction.lights.size(); ++k) {
+      const ChosenLight& step = extraction.choice.lights[k];
+      result.lights.push_back({finish_light(extraction.lights[k], options), step.error_before, step.error_after});
+      shown.push_back(result.lights.back().light.unity);
+    }
+    result.light_candidates = extraction.candidates;
+    if (reference != nullptr) {
+      const ViewTransform transform{options.colour_matrix, options.intensity, options.rotate_deg};
+      result.view_error = unity_view_error(*reference, transform, result.sh.shader, shown);
+    }
+    out = std::move(result);
+    return Status::success();
+  } catch (const std::bad_alloc&) {
+    return Status::error(Errc::OutOfMemory, "out of memory finishing the conversion");
   }
-  out = std::move(result);
-  return Status::success();
 }
 
 Status sample_map_reference(const MapImage& map, const ConvertOptions& options, ViewSamples& out) noexcept {
