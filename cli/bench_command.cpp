@@ -17,6 +17,7 @@
 #include "shpack/study/study.h"
 #include "shpack/study/study_inputs.h"
 #include "shpack/study/study_report.h"
+#include "shpack/study/view_error_study.h"
 
 namespace shpack::cli {
 namespace {
@@ -78,6 +79,41 @@ int run_scene_bench(const std::vector<std::string>& scenes, const BenchOptions& 
 
 }  // namespace
 
+// The inputs when none are given: the installed data (<exe dir>/../share/shpack/hdri) or
+// $SHPACK_DATA_DIR, never the source tree; then the synthetic maps.
+std::vector<std::string> default_map_inputs() {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path dir = study::find_bundled_maps(std::getenv(study::kDataDirVariable), exe);
+  std::vector<std::string> inputs = study::default_inputs(dir);
+  if (dir.empty())
+    std::fprintf(stderr, "bench: no bundled maps (neither $%s nor <command's folder>/../share/shpack/hdri "
+                 "is a folder); measuring the synthetic maps only\n", study::kDataDirVariable);
+  else if (inputs.size() == study::synthetic_map_names().size())
+    std::fprintf(stderr, "bench: no bundled maps in %s; measuring the synthetic maps only\n", dir.c_str());
+  return inputs;
+}
+
+// --view-error: view_error_study.h on each input.
+int run_view_error_bench(const std::vector<std::string>& inputs, const BenchOptions& options) {
+  std::vector<study::ViewErrorRecord> records;
+  bool all_ok = true;
+  for (const std::string& input : inputs) {
+    study::StudyImage image;
+    io::IoStatus st = study::load_study_input(input, image);
+    if (st.ok()) st = study::run_view_error_study(image, options.repeats, records);
+    if (!st.ok()) {
+      report_error(st.message);
+      all_ok = false;
+    } else {
+      std::fprintf(stderr, "bench: %s done\n", input.c_str());
+    }
+  }
+  if (records.empty()) return kExitFailure;
+  return finish_report(options.json ? study::view_error_json(records) : study::view_error_markdown(records),
+                       options.plot, all_ok, [&] { return study::write_view_error_plot(records, options.plot); });
+}
+
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& options) {
   CLI::App* cmd = app.add_subcommand("bench", "Accuracy against time of every projection method");
   cmd->add_option("inputs", options.inputs,
@@ -116,6 +152,9 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& options) {
       ->type_name("N")
       ->check(unsigned_in(1, 1000));
   cmd->add_flag("--quick", options.quick, "Three parameters per method instead of six or seven");
+  cmd->add_flag("--view-error", options.view_error,
+                "Instead of the methods: the error of what Unity shows per map for plain SH, --extract-sun, "
+                "--extract-lights 1 to 4 and each window, with the time of each conversion");
   cmd->add_flag("--json", options.json, "Print a JSON array, one record per run, instead of markdown");
   cmd->add_option("--plot", options.plot, "Also draw error against time into PREFIX.png and PREFIX.svg")
       ->type_name("PREFIX");
@@ -129,25 +168,13 @@ int run_bench(const BenchOptions& options) {
     report_usage_error("bench", "bench: give scenes (.json) or maps, not both in one run");
     return kExitUsage;
   }
+  std::vector<std::string> inputs = options.inputs;
+  if (inputs.empty()) inputs = default_map_inputs();
+  if (options.view_error) return run_view_error_bench(inputs, options);
   std::vector<MethodSpec> specs = study::full_sweep(options.quick, options.seed);
   if (!options.methods.empty() &&
       !study::parse_method_list(options.methods, options.quick, options.seed, specs).ok())
     return kExitUsage;  // checked by CLI11
-  std::vector<std::string> inputs = options.inputs;
-  if (inputs.empty()) {
-    // The installed data (<exe dir>/../share/shpack/hdri) or $SHPACK_DATA_DIR; never the
-    // source tree.
-    std::error_code ec;
-    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-    const std::filesystem::path dir = study::find_bundled_maps(std::getenv(study::kDataDirVariable), exe);
-    inputs = study::default_inputs(dir);
-    if (dir.empty())
-      std::fprintf(stderr, "bench: no bundled maps (neither $%s nor <command's folder>/../share/shpack/hdri "
-                   "is a folder); measuring the synthetic maps only\n", study::kDataDirVariable);
-    else if (inputs.size() == study::synthetic_map_names().size())
-      std::fprintf(stderr, "bench: no bundled maps in %s; measuring the synthetic maps only\n", dir.c_str());
-  }
-
   const study::StudySettings settings{options.repeats, options.threads, options.seeds};
   std::vector<study::StudyRecord> records;
   bool all_ok = true;

@@ -29,6 +29,7 @@ struct BenchOptions {
   unsigned threads = 1;             // for exact, center, mip; 0: all cores
   std::uint64_t seed = kDefaultMethodSeed;
   bool quick = false;               // a shorter sweep (CI)
+  bool view_error = false;          // --view-error: what Unity shows per configuration (view_error_study.h)
   bool json = false;
   std::string plot;                 // --plot PREFIX; empty: no plot
 };

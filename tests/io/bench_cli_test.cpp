@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli_runner.h"
@@ -123,6 +124,54 @@ TEST(BenchCli, WithoutInputsTheDataFolderThenTheSyntheticMaps) {
   // The note, then one progress line per run.
   EXPECT_EQ(run.err.rfind("bench: no bundled maps (neither $SHPACK_DATA_DIR nor ", 0), 0u) << run.err;
   EXPECT_EQ(static_cast<std::size_t>(std::count(run.err.begin(), run.err.end(), '\n')), inputs.size()) << run.err;
+}
+
+// --view-error: one record per configuration with every key; each is what `convert` with
+// those flags reports (the same pipeline, bit for bit, whatever the threads); the markdown
+// says whether the goal is met, and the plot is drawn.
+TEST(BenchCli, ViewErrorRecordsAreWhatConvertReports) {
+  const ScratchDir dir;
+  const fs::path map = write_tiny_map(dir);
+  CliRun run = run_shpack(dir, {"bench", "--view-error", map.string(), "--json", "--repeats", "1"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json records = nlohmann::json::parse(run.out, nullptr, /*allow_exceptions=*/false);
+  ASSERT_TRUE(records.is_array()) << run.out;
+  const std::vector<std::pair<std::string, std::vector<std::string>>> flags = {
+      {"plain", {}},
+      {"extract-sun", {"--extract-sun"}},
+      {"extract-lights 2", {"--extract-lights", "2"}},
+      {"window sloan", {"--window", "sloan"}},
+      {"extract-lights 4, window optimal", {"--extract-lights", "4", "--window", "optimal"}}};
+  std::size_t found = 0;
+  for (const nlohmann::json& r : records) {
+    for (const char* key : {"input", "config", "max_pct", "rms_pct", "bound_pct", "min_e_over_pi_pct", "lights",
+                            "time_ms_median", "time_ms_min", "time_ms_max"})
+      EXPECT_TRUE(r.contains(key)) << key;
+    EXPECT_GE(r["max_pct"].get<double>(), r["rms_pct"].get<double>());
+    for (const auto& [config, args] : flags) {
+      if (r["config"] != config) continue;
+      ++found;
+      std::vector<std::string> convert = {"convert", map.string(), "--nonfinite", "zero"};
+      convert.insert(convert.end(), args.begin(), args.end());
+      const CliRun converted = run_shpack(dir, convert);
+      ASSERT_EQ(converted.exit_code, 0) << converted.err;
+      const nlohmann::json doc = nlohmann::json::parse(converted.out);
+      EXPECT_EQ(r["max_pct"], doc["diagnostics"]["unity_view_error_max_pct"]) << config;
+      EXPECT_EQ(r["rms_pct"], doc["diagnostics"]["unity_view_error_rms_pct"]) << config;
+      const std::size_t lights = doc.contains("lights") ? doc["lights"].size() : doc.contains("sun") && doc["sun"].is_object();
+      EXPECT_EQ(r["lights"], lights) << config;
+    }
+  }
+  EXPECT_EQ(found, flags.size());
+  EXPECT_GE(records.back()["min_e_over_pi_pct"].get<double>(), 0.0);  // the optimal window: never negative
+
+  run = run_shpack(dir, {"bench", "--view-error", map.string(), "--repeats", "1", "--plot", (dir / "ve").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("\nGoal (extract-lights 4, window optimal: max error <= 5 %, E/pi never negative): met on "),
+            std::string::npos)
+      << run.out;
+  EXPECT_GT(fs::file_size(dir / "ve.png"), 0u);
+  EXPECT_GT(fs::file_size(dir / "ve.svg"), 0u);
 }
 
 TEST(BenchCli, ErrorsAreOneLine) {
