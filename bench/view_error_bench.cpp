@@ -1,8 +1,8 @@
 // view_error_bench.cpp - what the view error (view_error.h) costs beside the projection it
-// measures, on random equirect maps, one thread, as ratios from one run:
+// measures, on random equirect maps, one thread unless said, as ratios from one run:
 //   BM_Project/W    project_equirect (exact), the projection every convert makes;
 //   BM_Reference/W  the reference E/pi: begin_equirect, add_rows of the whole image, finish;
-//   BM_Sample/W     the reference at the 512 normals (sample_view_reference);
+//   BM_Sample/W/T   the reference at the 512 normals (sample_view_reference) on T threads;
 //   BM_Compare      unity_view_error on those samples (what --extract-lights repeats per trial).
 #include <benchmark/benchmark.h>
 
@@ -61,9 +61,10 @@ void BM_Reference(benchmark::State& state) {
 
 void BM_Sample(benchmark::State& state) {
   const ViewReference ref = reference_of(map_of(static_cast<std::uint32_t>(state.range(0))).view);
+  const auto threads = static_cast<unsigned>(state.range(1));
   for (auto _ : state) {
     ViewSamples samples;
-    if (!sample_view_reference(ref, samples).ok()) std::abort();
+    if (!sample_view_reference(ref, samples, threads).ok()) std::abort();
     benchmark::DoNotOptimize(samples);
   }
 }
@@ -80,7 +81,7 @@ void BM_Compare(benchmark::State& state) {
 
 BENCHMARK(BM_Project)->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Reference)->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Sample)->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Sample)->Args({1024, 1})->Args({1024, 2})->Args({4096, 1})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Compare)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -2,7 +2,9 @@
 # Regenerates the measured parts of docs/accuracy.md and the plot docs/img/accuracy.png and
 # .svg with `shpack bench`, every method over its full sweep:
 #   between "bench:begin" and "bench:end"                      the bundled maps, and the plot;
-#   between "bench-synthetic:begin" and "bench-synthetic:end"  the synthetic maps.
+#   between "bench-synthetic:begin" and "bench-synthetic:end"  the synthetic maps;
+#   between "view-error:begin" and "view-error:end"            `bench --view-error` of the
+#                                                              bundled maps, and its plot.
 # The prose around the markers is kept.
 #
 #   scripts/accuracy-doc.sh [BUILD_DIR]      default: build (Release, as quickstart.sh makes it)
@@ -19,6 +21,7 @@ trap 'rm -rf "$work"' EXIT
 mkdir -p "$repo/docs/img"
 # Relative paths, so the tables name data/hdri/x.exr whoever runs this.
 (cd "$repo" && "$shpack" bench data/hdri/*.exr --plot docs/img/accuracy) >"$work/bundled.md"
+(cd "$repo" && "$shpack" bench --view-error data/hdri/*.exr --plot docs/img/view-error) >"$work/view-error.md"
 "$shpack" bench synthetic:band-limited synthetic:gradient synthetic:sun synthetic:texel >"$work/synthetic.md"
 
 # Replaces the lines between "<!-- NAME:begin" and "<!-- NAME:end" of $work/doc.md by FILE.
@@ -36,5 +39,6 @@ splice() {
 cp "$doc" "$work/doc.md"
 splice bench "$work/bundled.md"
 splice bench-synthetic "$work/synthetic.md"
+splice view-error "$work/view-error.md"
 cp "$work/doc.md" "$doc"
-echo "accuracy-doc: updated $doc and docs/img/accuracy.{png,svg}" >&2
+echo "accuracy-doc: updated $doc and docs/img/{accuracy,view-error}.{png,svg}" >&2

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 
 namespace shpack::study {
 namespace {
@@ -25,12 +27,12 @@ double median(std::vector<double> values) {
 // The lowest E/pi of the SH (the lights add none below it: max(0, n . l) >= 0) in % of the
 // channel's mean, the SH's L0 term sh0 (unity_pack.h: E/pi's mean over the sphere is sh0).
 double lowest_pct(const FinishedSh& sh) {
-  double lowest = 0;
+  double lowest = std::numeric_limits<double>::infinity();
   for (int c = 0; c < kChannelCount; ++c) {
     const double mean = sh.unity_form.c[c][0];
     if (mean > 0) lowest = std::min(lowest, 100 * sh.min_e_over_pi[c].value / mean);
   }
-  return lowest;
+  return std::isfinite(lowest) ? lowest : 0.0;  // a black map: 0
 }
 
 }  // namespace

@@ -50,8 +50,10 @@ struct ViewSamples {
 // The i-th of n spherical Fibonacci directions.
 Dir3 spherical_fibonacci(std::size_t i, std::size_t n) noexcept;
 
+// The directions are evaluated on up to `threads` threads (0: all cores), each its own slot
+// (work_queue.h): the samples do not depend on the thread count.
 // Errors: BadSequence (the reference is not finished), OutOfMemory.
-Status sample_view_reference(const ViewReference& reference, ViewSamples& out) noexcept;
+Status sample_view_reference(const ViewReference& reference, ViewSamples& out, unsigned threads = 1) noexcept;
 
 // What the finish stage did to the map (pipeline.h FinishOptions): the truth is mapped by it.
 struct ViewTransform {

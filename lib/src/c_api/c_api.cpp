@@ -13,6 +13,7 @@ struct shpack_projector {
   shpack::EquirectProjector projector;
   shpack::ViewReference reference;  // the truth that the result's view error is measured against
   shpack::FinishOptions finish;
+  unsigned threads = 1;  // shpack_options.threads, for the reference's directions too
   bool finished = false;
   shpack_view_error view_error{};  // of the finished result
 };
@@ -95,6 +96,7 @@ int32_t shpack_projector_create(uint32_t width, uint32_t height, const shpack_op
   auto* p = new (std::nothrow) shpack_projector;
   if (p == nullptr) return report(Status::error(Errc::OutOfMemory, "cannot allocate the projector"), error);
   p->finish = convert.finish;
+  p->threads = convert.threads;
   // Stage 3 streamed by the caller, with its value policies applied as the rows arrive.
   const shpack::ProjectOptions project{convert.method.method, convert.nonfinite, convert.negative, convert.threads};
   if (Status st = p->projector.begin(width, height, project); !st.ok()) {
@@ -128,7 +130,8 @@ int32_t shpack_projector_finish(shpack_projector* projector, shpack_result* resu
   projector->finished = true;
   shpack::ViewSamples samples;
   if (Status st = projector->reference.finish(); !st.ok()) return report(st, error);
-  if (Status st = shpack::sample_view_reference(projector->reference, samples); !st.ok()) return report(st, error);
+  if (Status st = shpack::sample_view_reference(projector->reference, samples, projector->threads); !st.ok())
+    return report(st, error);
   shpack::Conversion conversion;
   if (Status st = shpack::finish_conversion(radiance, stats, shpack::Extraction{}, projector->finish, &samples, conversion); !st.ok())
     return report(st, error);

@@ -138,7 +138,7 @@ Status sample_map_reference(const MapImage& map, const ConvertOptions& options, 
   ViewReference reference;
   const ProjectOptions project{SamplingMethod::Exact, NonFinite::Zero, options.negative, 1};
   if (Status st = build_view_reference(map, project, reference); !st.ok()) return st;
-  return sample_view_reference(reference, out);
+  return sample_view_reference(reference, out, options.threads);
 }
 
 }  // namespace shpack
