@@ -11,6 +11,7 @@
 #include "command_names.h"
 #include "convert_command.h"
 #include "eval_command.h"
+#include "irradiance_command.h"
 #include "preview_command.h"
 #include "report.h"
 #include "shpack/io/version.h"
@@ -52,11 +53,13 @@ int main(int argc, char** argv) {
   BenchOptions bench;
   PreviewOptions preview;
   BakeCommandOptions bake;
+  IrradianceOptions irradiance;
   const CLI::App* convert_app = add_convert_command(app, convert);
   const CLI::App* eval_app = add_eval_command(app, eval);
   add_bench_command(app, bench);
   const CLI::App* preview_app = add_preview_command(app, preview);
   const CLI::App* bake_app = add_bake_command(app, bake);
+  const CLI::App* irradiance_app = add_irradiance_command(app, irradiance);
   for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) sub->set_version_flag("--version", version);
 
   if (argc > 1 && argv[1][0] != '-') {
@@ -76,5 +79,6 @@ int main(int argc, char** argv) {
   if (convert_app->parsed()) return run_convert(convert);
   if (preview_app->parsed()) return run_preview(preview);
   if (bake_app->parsed()) return run_bake(bake);
+  if (irradiance_app->parsed()) return run_irradiance(irradiance);
   return eval_app->parsed() ? run_eval(eval) : run_bench(bench);
 }

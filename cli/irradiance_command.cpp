@@ -1,0 +1,112 @@
+#include "irradiance_command.h"
+
+#include <charconv>
+#include <cstdio>
+
+#include "enum_option.h"
+#include "report.h"
+#include "shpack/io/exr_writer.h"
+#include "shpack/io/map_source.h"
+#include "validators.h"
+
+namespace shpack::cli {
+
+bool parse_irradiance_source(const std::string& text, IrradianceRequest& request) {
+  if (text == "sh" || text == "exact") {
+    request.source = text == "sh" ? IrradianceSource::Sh : IrradianceSource::Exact;
+    request.samples = 0;
+    return true;
+  }
+  const std::size_t colon = text.find(':');
+  const std::string name = text.substr(0, colon);
+  if (colon == std::string::npos || (name != "riemann" && name != "mc")) return false;
+  std::uint32_t n = 0;
+  const char* first = text.data() + colon + 1;
+  const char* last = text.data() + text.size();
+  const auto [end, error] = std::from_chars(first, last, n);
+  if (error != std::errc() || end != last || first == last || n == 0) return false;
+  request.source = name == "riemann" ? IrradianceSource::Riemann : IrradianceSource::MonteCarlo;
+  request.samples = n;
+  return true;
+}
+
+CLI::App* add_irradiance_command(CLI::App& app, IrradianceOptions& options) {
+  CLI::App* cmd = app.add_subcommand("irradiance", "Write E/pi of a map as an image: what L2 keeps and loses");
+  cmd->add_option("input", options.input, "The environment map (any format convert reads)")->type_name("FILE")->required();
+  cmd->add_option("-o,--output", options.output, "The OpenEXR file to write (float RGB); - for stdout")
+      ->type_name("FILE")
+      ->required();
+  add_enum_option(*cmd, "--input-layout", options.input_layout,
+                  {{"auto", Layout::Auto}, {"equirect", Layout::Equirect}, {"hcross", Layout::HorizontalCross},
+                   {"vcross", Layout::VerticalCross}, {"hstrip", Layout::HorizontalStrip},
+                   {"vstrip", Layout::VerticalStrip}, {"octahedral", Layout::Octahedral},
+                   {"angular", Layout::Angular}, {"mirrorball", Layout::MirrorBall}},
+                  "How the input holds the sphere, as convert's --layout (default auto)");
+  add_enum_option(*cmd, "--layout", options.layout,
+                  {{"equirect", Layout::Equirect}, {"hcross", Layout::HorizontalCross},
+                   {"vcross", Layout::VerticalCross}, {"hstrip", Layout::HorizontalStrip},
+                   {"vstrip", Layout::VerticalStrip}},
+                  "The output's layout (default equirect)");
+  cmd->add_option("--size", options.size,
+                  "Equirect: the height (the width is twice it); cubes: a face's side (default 128)")
+      ->type_name("N")
+      ->check(unsigned_in(1, 8192));
+  cmd->add_option("--source", options.source,
+                  "sh (what Unity shows from the L2 SH), exact (the map's cosine convolution, within a "
+                  "stated bound), riemann:N or mc:N (the Riemann and Monte Carlo sums of N samples) "
+                  "(default exact)")
+      ->type_name("SOURCE")
+      ->check([](const std::string& text) {
+        IrradianceRequest request;
+        return parse_irradiance_source(text, request) ? std::string()
+                                                      : "'" + text + "': not sh, exact, riemann:N or mc:N (N >= 1)";
+      });
+  cmd->add_option("--seed", options.seed, "Seed of mc (default " + std::to_string(kDefaultMethodSeed) + ")")
+      ->type_name("N")
+      ->check(unsigned_integer());
+  cmd->add_option("--threads", options.threads, "Worker threads (default 0: all cores); the image does not depend on it")
+      ->type_name("N")
+      ->check(unsigned_integer());
+  return cmd;
+}
+
+int run_irradiance(const IrradianceOptions& options) {
+  IrradianceRequest request;
+  if (!parse_irradiance_source(options.source, request)) return kExitUsage;  // checked by CLI11
+  request.seed = options.seed;
+  request.layout = options.layout;
+  request.size = options.size;
+  request.threads = options.threads;
+
+  io::MapSource source;
+  io::SourceOptions source_options;
+  source_options.layout = options.input_layout;
+  if (io::IoStatus st = source.open(options.input, source_options); !st.ok()) {
+    report_error(st.message);
+    return kExitFailure;
+  }
+  MapImage map;
+  if (io::IoStatus st = source.read_whole(map, options.threads); !st.ok()) {
+    report_error(st.message);
+    return kExitFailure;
+  }
+  ConvertOptions convert;
+  convert.nonfinite = NonFinite::Zero;  // as the reference reads NaN/Inf texels: black
+  convert.threads = options.threads;
+  convert.finish.colour_matrix = source.info().colour.matrix;
+  IrradianceImage image;
+  if (Status st = render_irradiance(map, convert, request, image); !st.ok()) {
+    report_error(options.input + ": " + st.what);
+    return st.code == Errc::InvalidArgument ? kExitUsage : kExitFailure;
+  }
+  if (io::IoStatus st = io::write_exr_rgb(options.output, image.width, image.height, image.rgb); !st.ok()) {
+    report_error(st.message);
+    return kExitFailure;
+  }
+  if (request.source == IrradianceSource::Exact)
+    std::fprintf(stderr, "irradiance: %ux%u, exact within %.6g (E/pi, the largest bound of a texel)\n", image.width,
+                 image.height, image.bound);
+  return kExitOk;
+}
+
+}  // namespace shpack::cli
