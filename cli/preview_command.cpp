@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "enum_option.h"
 #include "output_check.h"
 #include "report.h"
 #include "validators.h"
@@ -37,8 +38,14 @@ CLI::App* add_preview_command(CLI::App& app, PreviewOptions& options) {
       ->type_name("FILE")
       ->required();
   cmd->add_option("--input", options.input,
-                  "The equirect map the document came from: adds its brute-force E/pi and the error map")
+                  "The map the document came from: adds its exact E/pi and the error map")
       ->type_name("FILE");
+  add_enum_option(*cmd, "--input-layout", options.input_layout,
+                  {{"auto", Layout::Auto}, {"equirect", Layout::Equirect}, {"hcross", Layout::HorizontalCross},
+                   {"vcross", Layout::VerticalCross}, {"hstrip", Layout::HorizontalStrip},
+                   {"vstrip", Layout::VerticalStrip}, {"octahedral", Layout::Octahedral},
+                   {"angular", Layout::Angular}, {"mirrorball", Layout::MirrorBall}},
+                  "How --input holds the sphere, as convert's --layout (default auto)");
   cmd->add_option("--size", options.size, "Sphere diameter in pixels, 32 to 1024 (default 128)")
       ->type_name("PIXELS")
       ->check(unsigned_in(32, 1024));
@@ -66,6 +73,7 @@ int run_preview(const PreviewOptions& options) {
   io::PreviewSettings settings;
   settings.size = options.size;
   settings.reference = options.input;
+  settings.reference_layout = options.input_layout;
   settings.reference_label = std::filesystem::path(options.input).filename().string();
   io::Rgb8Image image;
   io::PreviewReport report;
@@ -83,8 +91,8 @@ int run_preview(const PreviewOptions& options) {
             << "negative E/pi (striped): " << percent(report.negative_fraction, 1.0) << " of the sphere\n";
   if (report.has_reference) {
     const double bound = report.reference_bound_luminance;
-    text << "reference: brute-force E/pi over " << report.cells_w << "x" << report.cells_h
-              << " cells, error <= " << number(bound) << " (" << percent(bound, report.mean_luminance)
+    text << "reference: exact E/pi of the map's texels, error <= " << number(bound) << " ("
+              << percent(bound, report.mean_luminance)
               << " of the mean)\n"
               << "sh - reference (luminance): max |error| " << number(report.max_abs_error) << " ("
               << percent(report.max_abs_error, report.mean_luminance) << " of the mean), rms "

@@ -11,12 +11,15 @@
 #include <cstdint>
 #include <string>
 
+#include "shpack/layout.h"
+
 namespace shpack::cli {
 
 struct PreviewOptions {
   std::string document;  // a JSON document of shpack convert
   std::string output;    // -o, a .png file
-  std::string input;     // --input: the map the document came from (equirect), or empty
+  std::string input;     // --input: the map the document came from, or empty
+  Layout input_layout = Layout::Auto;  // --input-layout
   std::uint32_t size = 128;  // --size: sphere diameter in pixels
 };
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates docs/gallery.md and its images docs/img/<map>.png from the bundled maps in
 # data/hdri: for each map, `shpack convert` with the default options, then `shpack preview
-# --input` (lit spheres, E/pi, the brute-force reference and the error map). Builds the
+# --input` (lit spheres, E/pi, the exact reference and the error map). Builds the
 # shpack command first (Release, into $SHPACK_BUILD_DIR, default build/, as quickstart.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -33,7 +33,7 @@ this page and its images with `scripts/gallery.sh` (it builds `shpack` first).
 
 Each image: a white diffuse sphere lit by the map's SH as Unity's `ShadeSH9` lights it, seen
 from -Z (front) and from +Y (top); E/pi over all directions as an equirect map (centre +X);
-below, the brute-force E/pi of the map itself (the reference) and the luminance of the
+below, the exact E/pi of the map itself (within a stated bound) (the reference) and the luminance of the
 difference, blue where the SH is too dark and red where it is too bright, on a colour bar
 labelled with its ends. Magenta stripes mark directions where the SH gives negative E/pi (the
 built-in Standard shader clamps them to 0). All panels share one tone mapping: Reinhard
@@ -51,9 +51,9 @@ HEADER
     "$shpack" convert "$map" -o "$work/$name.json"
     "$shpack" preview "$work/$name.json" -o "docs/img/$name.png" --input "$map" >"$work/$name.txt"
     negative=$(field "negative E/pi (striped): " "$work/$name.txt")
-    bound=$(field "reference: brute-force E/pi over " "$work/$name.txt")
+    bound=$(field "reference: exact E/pi of the map's texels, error <= " "$work/$name.txt")
     error=$(field "sh - reference (luminance): max |error| " "$work/$name.txt")
-    echo "| [$name](#$name) | ${negative% of the sphere} | ${bound#* cells, error <= } | $error |"
+    echo "| [$name](#$name) | ${negative% of the sphere} | $bound | $error |"
   done
   for map in data/hdri/*.exr; do
     name=$(basename "$map" .exr)

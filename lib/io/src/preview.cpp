@@ -7,12 +7,13 @@
 #include <optional>
 
 #include "preview_draw.h"
-#include "shpack/irradiance_reference.h"
 #include "shpack/conventions.h"
-#include "shpack/io/image_file.h"
+#include "shpack/io/map_source.h"
 #include "shpack/layout.h"
+#include "shpack/pipeline.h"
 #include "shpack/rotate.h"
 #include "shpack/unity_pack.h"
+#include "shpack/view_reference.h"
 
 namespace shpack::io {
 namespace {
@@ -74,24 +75,34 @@ std::string number(double v, bool sign) {
   return text;
 }
 
-IoStatus load_reference(const std::filesystem::path& path, const ShJsonContent& content,
-                        std::optional<ReferenceIrradiance>& reference) {
-  ImageFile map;
-  if (IoStatus st = read_image_file(path, map); !st.ok()) return st;
-  if (resolve_layout(Layout::Auto, map.width, map.height) != Layout::Equirect) {
-    return IoStatus::error(IoErrc::UnknownLayout, path,
-                           "a " + std::to_string(map.width) + "x" + std::to_string(map.height) +
-                               " image; the reference must be an equirect map (2:1, or 1x1)");
-  }
-  const auto nonfinite = std::count_if(map.pixels.begin(), map.pixels.end(), [](float v) { return !std::isfinite(v); });
-  if (nonfinite > 0) {
-    return IoStatus::error(IoErrc::NonFiniteTexel, path,
-                           std::to_string(nonfinite) + " NaN/Inf values; the reference needs finite radiance");
-  }
-  ImageView view = map.view();
-  if (const Status st = resolve_view(view); !st.ok()) return IoStatus::error(IoErrc::Core, path, st.what);
-  reference.emplace(view, content.intensity, kReferenceCellsW, kReferenceCellsH, kReferenceLevels);
+// The input map as the document's truth: any layout convert reads, through the same source
+// (its colour matrix to Rec. 709 included), with NaN/Inf texels read as 0 as the view error
+// reads them (view_reference.h).
+IoStatus load_reference(const PreviewSettings& settings, ViewReference& reference, std::optional<Matrix3>& matrix) {
+  MapSource source;
+  SourceOptions options;
+  options.layout = settings.reference_layout;
+  if (IoStatus st = source.open(settings.reference, options); !st.ok()) return st;
+  MapImage map;
+  if (IoStatus st = source.read_whole(map, 0); !st.ok()) return st;
+  const ProjectOptions project{SamplingMethod::Exact, NonFinite::Zero, Negative::Keep, 0};
+  if (Status st = build_view_reference(map, project, reference); !st.ok())
+    return IoStatus::error(IoErrc::Core, settings.reference, st.what);
+  matrix = source.info().colour.matrix;
   return IoStatus::success();
+}
+
+// k M v, and k |M| v for a bound (no matrix: the identity).
+std::array<double, 3> to_output(const std::optional<Matrix3>& m, double k, const std::array<double, 3>& v,
+                                bool absolute) {
+  std::array<double, 3> out = v;
+  if (m)
+    for (int c = 0; c < 3; ++c) {
+      out[c] = 0;
+      for (int j = 0; j < 3; ++j) out[c] += (absolute ? std::abs((*m)[c][j]) : (*m)[c][j]) * v[j];
+    }
+  for (double& x : out) x *= k;
+  return out;
 }
 
 }  // namespace
@@ -102,9 +113,10 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
   if (s < 32 || s > 1024) {
     return IoStatus::error(IoErrc::InvalidArgument, "preview", "the size must be 32..1024 pixels");
   }
-  std::optional<ReferenceIrradiance> reference;
+  std::optional<ViewReference> reference;
+  std::optional<Matrix3> matrix;
   if (!settings.reference.empty()) {
-    if (IoStatus st = load_reference(settings.reference, content, reference); !st.ok()) return st;
+    if (IoStatus st = load_reference(settings, reference.emplace(), matrix); !st.ok()) return st;
   }
 
   PreviewReport out;
@@ -153,8 +165,6 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
                         "% OF SPHERE). REINHARD, MEAN E/PI " + number(out.mean_luminance, false) + " -> 0.5, SRGB");
 
   if (reference) {
-    out.cells_w = reference->cells_w();
-    out.cells_h = reference->cells_h();
     const Matrix3 r = rotation_about_y(content.rotate_deg);
     std::vector<double> error(std::size_t{pw} * ph);
     double sum_sq = 0;
@@ -164,15 +174,17 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
         const Dir3 n = panel_direction(x, y, pw, ph);
         const Dir3 v = {r[0][0] * n.x + r[1][0] * n.y + r[2][0] * n.z, r[0][1] * n.x + r[1][1] * n.y + r[2][1] * n.z,
                         r[0][2] * n.x + r[1][2] * n.y + r[2][2] * n.z};
-        const ReferenceValue ref = reference->eval(v);
-        for (int c = 0; c < 3; ++c) out.reference_bound[c] = std::max(out.reference_bound[c], ref.bound[c]);
-        out.reference_bound_luminance = std::max(out.reference_bound_luminance, luminance(ref.bound));
-        const double e = sh_luminance[std::size_t{y} * pw + x] - luminance(ref.e_over_pi);
+        const ReferenceValue value = reference->eval(v);
+        const std::array<double, 3> e_over_pi = to_output(matrix, content.intensity, value.e_over_pi, false);
+        const std::array<double, 3> bound = to_output(matrix, content.intensity, value.bound, true);
+        for (int c = 0; c < 3; ++c) out.reference_bound[c] = std::max(out.reference_bound[c], bound[c]);
+        out.reference_bound_luminance = std::max(out.reference_bound_luminance, luminance(bound));
+        const double e = sh_luminance[std::size_t{y} * pw + x] - luminance(e_over_pi);
         error[std::size_t{y} * pw + x] = e;
         out.max_abs_error = std::max(out.max_abs_error, std::fabs(e));
         sum_sq += e * e * panel_solid_angle(y, pw, ph);
         put(image, out.reference.x + x, out.reference.y + y,
-            display(ref.e_over_pi, out.exposure, out.reference.x + x, out.reference.y + y));
+            display(e_over_pi, out.exposure, out.reference.x + x, out.reference.y + y));
       }
     }
     out.rms_error = std::sqrt(sum_sq / (4.0 * std::numbers::pi));
@@ -192,7 +204,7 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
     detail::draw_text(image, bar.x + (bar.width - detail::text_width("0")) / 2, labels, "0");
     detail::draw_text(image, bar.x + bar.width - detail::text_width(high), labels, high);
 
-    detail::draw_text(image, out.reference.x, row2 - kTitleHeight + 2, "REFERENCE: BRUTE-FORCE E/PI");
+    detail::draw_text(image, out.reference.x, row2 - kTitleHeight + 2, "REFERENCE: EXACT E/PI OF THE MAP");
     detail::draw_text(image, out.error.x, row2 - kTitleHeight + 2, "ERROR: SH - REFERENCE, LUMINANCE");
     const double bound_percent =
         out.mean_luminance > 0 ? 100.0 * out.reference_bound_luminance / out.mean_luminance : 0.0;
@@ -200,9 +212,9 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
     const std::size_t fits = (out.reference.width + 1) / detail::kGlyphAdvance;
     if (label.size() > fits) label = label.substr(0, fits - 3) + "...";
     detail::draw_text(image, out.reference.x, bar.y, label);
-    detail::draw_text(image, out.reference.x, labels,
-                      std::to_string(out.cells_w) + "X" + std::to_string(out.cells_h) + " CELLS, ERROR <= " +
-                          number(bound_percent, false) + "% OF MEAN");
+    std::string bound_text = "ERROR <= ";
+    bound_text.append(number(bound_percent, false)).append("% OF MEAN");
+    detail::draw_text(image, out.reference.x, labels, bound_text);
   }
   report = out;
   return IoStatus::success();

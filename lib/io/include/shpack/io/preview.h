@@ -14,30 +14,18 @@
 // shade_sh9). Where any channel is negative (L2 ringing, which the built-in Standard shader
 // clamps to 0), the pixel is marked with magenta diagonal stripes on black.
 //
-// With a reference map (the input the document came from, equirect):
+// With a reference map (the input the document came from, in any layout `convert` reads):
 //
-//   "reference"  2S x S  the brute-force E/pi of the map: (1/pi) sum over texels of
-//                        L int max(0, n.w) dw, with the document's intensity and rotation
+//   "reference"  2S x S  the exact E/pi of the map: (1/pi) sum over texels of
+//                        L int max(0, n.w) dw, in linear Rec. 709 (the file's colour matrix,
+//                        as convert applies it) with the document's intensity and rotation
 //   "error"      2S x S  luminance of sh - reference, blue (sh too dark) - white - red (too
 //                        bright), with a colour bar labelled with its end values
 //
-// Reference accuracy. For speed the map is summed in cells (kReferenceCellsW x
-// kReferenceCellsH, refined where needed, see below). A cell T holding texels (or parts of
-// texels) t is represented by its
-// exact flux vector m_T = sum_t L_t int_t w dw, its positive and negative flux
-// P_T = sum_t max(L_t, 0) Omega_t, N_T = sum_t max(-L_t, 0) Omega_t, its centre direction c_T
-// and a radius r_T >= the angle from c_T to any point of the cell (half its theta extent plus
-// max sin(theta) times half its longitude extent: along a meridian, then a parallel). For a
-// normal n with d = n.c_T, every w in T has |n.w - d| <= r_T, so the cell's true contribution
-// C = sum_t L_t int_t max(0, n.w) dw is:
-//   - exactly n.m_T if d >= r_T (the cosine is linear on the cell), exactly 0 if d <= -r_T;
-//   - otherwise (the terminator crosses the cell) in both [n.m_T - N_T h, n.m_T + P_T h]
-//     with h = r_T - d (as max(0, x) = x + max(0, -x)) and [-N_T g, P_T g] with g = d + r_T:
-//     the preview takes the middle of their intersection and adds its half-width to the bound.
-// So the reference's error is at most the reported bound (divided by pi), up to rounding. A cut
-// cell is first split into its 2 x 2 children (kReferenceLevels levels), which shrinks the bound
-// about 4x per level: on the bundled 1024 x 512 maps it is 0.2% to 2.7% of the mean E/pi at
-// worst (the largest where a sun sits on the terminator), and a preview takes about a second.
+// The reference is the view error's (view_reference.h): exact where a cell of texels lies
+// wholly on one side of the normal's horizon, within a stated bound where the horizon cuts
+// it; the report gives the largest bound over the panel's pixels (0.5 to 2.7 % of the mean
+// E/pi on the bundled maps). NaN/Inf texels are read as 0, as the view error reads them.
 //
 // Tone mapping, the same for every panel: v -> Reinhard(k v) = k v / (1 + k v) per channel,
 // then the sRGB encoding (IEC 61966-2-1), with k = 1 / (mean E/pi luminance), the luminance
@@ -58,13 +46,9 @@
 
 #include "shpack/io/io_status.h"
 #include "shpack/io/json_reader.h"
+#include "shpack/layout.h"
 
 namespace shpack::io {
-
-// The reference's cells: 64 x 32 on top, refined twice (2 x 2 each) where the terminator
-// crosses them, down to 256 x 128.
-inline constexpr std::uint32_t kReferenceCellsW = 64, kReferenceCellsH = 32;
-inline constexpr int kReferenceLevels = 3;
 
 // An 8-bit sRGB RGB image, row-major from the top.
 struct Rgb8Image {
@@ -77,7 +61,8 @@ struct Rgb8Image {
 
 struct PreviewSettings {
   std::uint32_t size = 128;          // S, the sphere's diameter in pixels; 32..1024
-  std::filesystem::path reference;   // an equirect map; empty: no reference panels
+  std::filesystem::path reference;   // the input map; empty: no reference panels
+  Layout reference_layout = Layout::Auto;  // how it holds the sphere (convert's --layout)
   std::string reference_label;       // how the reference is named in the image (its file name)
 };
 
@@ -93,7 +78,6 @@ struct PreviewReport {
   PanelRect front, top, sh;            // the panels
   bool has_reference = false;          // the fields below are set only with a reference
   PanelRect reference, error, colour_bar;
-  std::uint32_t cells_w = 0, cells_h = 0;  // the reference's cells
   std::array<double, 3> reference_bound{};  // per channel: max over pixels of the bound, E/pi units
   double reference_bound_luminance = 0;     // max over pixels of the luminance of the bound
   double error_scale = 0;              // the colour bar spans [-error_scale, +error_scale]
@@ -102,8 +86,8 @@ struct PreviewReport {
 };
 
 // Renders the panels for `content` (and settings.reference if set). Errors name the
-// reference file: unreadable, not equirect (2:1, or 1x1), or with NaN/Inf texels; and
-// InvalidArgument for a size outside 32..1024.
+// reference file: those of the map source (map_source.h: unreadable, a shape no layout fits
+// or that does not fit the layout named); and InvalidArgument for a size outside 32..1024.
 IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& settings, Rgb8Image& image,
                         PreviewReport& report);
 
