@@ -549,5 +549,51 @@ TEST(WindowOptimal, FinishStageKeepsTheRadianceConsistent) {
   }
 }
 
+TEST(WindowOptimal, InL1ItIsTheClosedFormConeProjection) {
+  // An L1 channel (band 2 zero) that rings: its fit stays L1, has minimum s0 - |s| >= 0 (0
+  // up to the ulps it is raised by), and satisfies the KKT conditions of minimise
+  // (s0 - t0)^2 + |s - t|^2 / 3 s.t. s0 - |s| >= 0 (nonnegative_fit.h): with multiplier
+  // lambda = 2 (s0 - t0) >= 0, the stationarity of band 1 reads s - t = -3 (s0 - t0) s/|s|.
+  std::mt19937_64 rng(11);
+  for (int k = 0; k < 200; ++k) {
+    Channel t = random_ringing(rng, k);
+    for (int i = 4; i < 9; ++i) t[i] = 0;
+    if (!(t[0] - std::hypot(t[1], t[2], t[3]) < 0) || t[0] < 0) continue;
+    ShL2 out;
+    ASSERT_TRUE(shpack::apply_window(single(t), optimal(), out, nullptr, /*l1=*/true).ok());
+    const Channel& s = out.c[0];
+    for (int i = 4; i < 9; ++i) EXPECT_EQ(s[i], 0.0) << k;
+    const double length = std::hypot(s[1], s[2], s[3]), scale = std::fabs(t[0]) + std::hypot(t[1], t[2], t[3]);
+    EXPECT_GE(minimum(s), 0.0) << k;
+    EXPECT_LE(std::fabs(s[0] - length), 8 * kU * scale) << k;  // on the cone's boundary: active constraint
+    EXPECT_GE(s[0] - t[0], 0.0) << k;
+    for (int i = 1; i <= 3; ++i)
+      EXPECT_NEAR(s[i] - t[i], -3 * (s[0] - t[0]) * s[i] / length, 16 * kU * scale) << k << " i=" << i;
+  }
+}
+
+TEST(WindowOptimal, WithL1TheFinishedEOverPiIsNonNegative) {
+  // A directional light's L1 part, (1 + 2 n.d) / (4 pi) per unit irradiance, rings; with
+  // --window optimal --l1 (and sloan --l1) what Unity shows must not be negative anywhere.
+  // (The L1 part of the non-negative L2 fit need not be non-negative: the window must act on
+  // the L1 function.)
+  ShL2 radiance;
+  const std::array<double, 9> y = unity_basis_slow(0.48, 0.6, 0.64);
+  for (int c = 0; c < 3; ++c)
+    for (int i = 0; i < 9; ++i) radiance.c[c][i] = (1.0 + c) * y[i];
+  for (const char* name : {"optimal", "sloan"}) {
+    shpack::FinishOptions options;
+    ASSERT_TRUE(shpack::parse_window(name, options.window).ok());
+    options.l1 = true;
+    shpack::FinishedSh out;
+    ASSERT_TRUE(shpack::finish_projection(radiance, options, out).ok()) << name;
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_GE(out.min_e_over_pi[c].value, 0.0) << name << " c=" << c;
+      for (int i = 4; i < 9; ++i) EXPECT_EQ(out.unity_form.c[c][i], 0.0) << name;
+      for (int i = 4; i < 9; ++i) EXPECT_EQ(out.radiance.c[c][i], 0.0) << name;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace shpack_test

@@ -16,11 +16,11 @@
 //                  equirect file in bands through EquirectProjector (streams_rows).
 //   4. finish      finish_projection, on the SH and on every extracted light alike:
 //                    radiance = rotate_about_y(intensity M L, rotate_deg)  (colorspace.h, rotate.h)
-//                    unity    = apply_window(radiance_to_unity_form(radiance), window)
+//                    L1:        band 2 of the radiance set to 0 (document.h says why)
+//                    unity    = apply_window(radiance_to_unity_form(radiance), window, L1)
 //                    radiance = apply_band_factors(radiance, the window's factors), or
 //                               for --window optimal (no band factors) the radiance whose
 //                               Unity form the fit returned
-//                    L1:        band 2 of both set to 0 (document.h says why)
 //                    float32 check, minimum of E/pi per channel (sh_minimum.h), packing
 //                  (unity_pack.h: the only place where doubles become float32).
 //   5. document    make_document (document.h): what was read, the options applied, the

@@ -83,8 +83,11 @@ struct WindowResult {
 // Windows Unity-form coefficients (Sloan and Optimal need E/pi, i.e. Unity form). To keep
 // radiance coefficients consistent, apply the same `result.factors` to them when
 // scales_bands(window.kind); for Optimal the radiance is out_c,i / kUnityScale[i]
-// (convolution.h).
-Status apply_window(const ShL2& unity_form, const Window& window, ShL2& out,
-                    WindowResult* result = nullptr) noexcept;
+// (convolution.h). l1: band 2 of the input is 0 and must stay 0 (FinishOptions::l1): Sloan
+// then finds the least windowing that makes the L1 function non-negative, and Optimal the
+// nearest non-negative L1 function, in closed form (lib/src/sh/nonnegative_fit.h); the fixed
+// windows scale bands, which keeps band 2 at 0.
+Status apply_window(const ShL2& unity_form, const Window& window, ShL2& out, WindowResult* result = nullptr,
+                    bool l1 = false) noexcept;
 
 }  // namespace shpack

@@ -53,15 +53,15 @@ Status finish_projection(const ShL2& projected_radiance, const FinishOptions& op
   FinishedSh result;
   const ShL2 linear = options.colour_matrix ? mix_channels(projected_radiance, *options.colour_matrix)
                                             : projected_radiance;
-  const ShL2 radiance = rotate_about_y(scaled(linear, options.intensity), options.rotate_deg);
+  ShL2 radiance = rotate_about_y(scaled(linear, options.intensity), options.rotate_deg);
+  // L1 before the window, so that sloan and optimal make the L1 function non-negative (the
+  // L1 part of a non-negative L2 function need not be).
+  if (options.l1) remove_band_2(radiance);
   const ShL2 unity_form = radiance_to_unity_form(radiance);
-  if (Status st = apply_window(unity_form, options.window, result.unity_form, &result.window); !st.ok()) return st;
+  if (Status st = apply_window(unity_form, options.window, result.unity_form, &result.window, options.l1); !st.ok())
+    return st;
   result.radiance = scales_bands(options.window.kind) ? apply_band_factors(radiance, result.window.factors)
                                                       : radiance_of_fit(radiance, unity_form, result.unity_form);
-  if (options.l1) {
-    remove_band_2(result.radiance);
-    remove_band_2(result.unity_form);
-  }
   if (!fits_unity_float32(result.unity_form))
     return Status::error(Errc::OutOfRange, "the lighting is too bright for Unity's float32 coefficients");
   for (int c = 0; c < kChannelCount; ++c) result.min_e_over_pi[c] = minimum_on_sphere(result.unity_form, c);

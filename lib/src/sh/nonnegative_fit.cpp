@@ -212,4 +212,20 @@ NonnegativeFit nearest_nonnegative(const ShL2& unity_form, int channel) noexcept
   return fit;
 }
 
+NonnegativeFit nearest_nonnegative_l1(const ShL2& unity_form, int channel) noexcept {
+  const std::array<double, kShCount>& t = unity_form.c[channel];
+  const double length = std::hypot(t[1], t[2], t[3]);
+  NonnegativeFit fit;
+  const double s0 = (3 * t[0] + length) / 4;
+  ShL2 result;
+  result.c[0][0] = s0;
+  for (int i = 1; i <= 3; ++i) result.c[0][i] = s0 * (t[i] / length);
+  // Raised until the exact minimum on the sphere, as finish_projection checks it, is >= 0.
+  while (minimum_on_sphere(result, 0).value < 0)
+    result.c[0][0] = std::nextafter(result.c[0][0], std::numeric_limits<double>::infinity());
+  fit.unity_form = result.c[0];
+  fit.raise = result.c[0][0] - s0;
+  return fit;
+}
+
 }  // namespace shpack

@@ -83,4 +83,15 @@ constexpr double rms_weight(int i) noexcept { return kY0 / kBasisScale[i] * (kY0
 // only (about 8 KB).
 NonnegativeFit nearest_nonnegative(const ShL2& unity_form, int channel) noexcept;
 
+// The same problem in L1 (--l1: band 2 is 0 and stays 0), in closed form. E/pi = s0 + s . n,
+// n = (x, y, z) in the order of s = (s3, s1, s2), has its minimum s0 - |s| (at n = -s/|s|),
+// and the weights are (1, 1/3, 1/3, 1/3): minimise (s0 - t0)^2 + |s - t|^2 / 3 subject to
+// s0 >= |s|. In u = (s0, s / sqrt 3) that is the Euclidean projection onto the cone
+// u0 >= sqrt 3 |u'|; for t0 >= 0 > t0 - |t| (a ringing channel with a positive mean: the
+// preconditions of nearest_nonnegative) it lies on the cone's boundary ray through t:
+//   s0 = (3 t0 + |t|) / 4,  s = s0 t / |t|
+// (the projection of (t0, |t|/sqrt 3) onto the direction (sqrt 3, 1) / 2), then s0 raised by
+// ulps until minimum_on_sphere is >= 0. Planes 0, no certificate.
+NonnegativeFit nearest_nonnegative_l1(const ShL2& unity_form, int channel) noexcept;
+
 }  // namespace shpack

@@ -51,7 +51,7 @@ std::array<double, 3> sloan_channel(const ShL2& sh, int channel, bool& impossibl
 }
 
 // Optimal (window.h, nonnegative_fit.h) on channel `channel`: `out` holds the input there.
-void optimal_channel(const ShL2& in, int channel, ShL2& out, WindowResult& r) noexcept {
+void optimal_channel(const ShL2& in, int channel, bool l1, ShL2& out, WindowResult& r) noexcept {
   for (const double s : in.c[channel])
     if (!std::isfinite(s)) return;  // nothing to fit; finish_projection's float32 check refuses it
   if (minimum_on_sphere(in, channel).value >= 0.0) return;
@@ -59,7 +59,7 @@ void optimal_channel(const ShL2& in, int channel, ShL2& out, WindowResult& r) no
     r.impossible[channel] = true;
     return;
   }
-  const NonnegativeFit fit = nearest_nonnegative(in, channel);
+  const NonnegativeFit fit = l1 ? nearest_nonnegative_l1(in, channel) : nearest_nonnegative(in, channel);
   out.c[channel] = fit.unity_form;
   r.planes[channel] = fit.planes;
 }
@@ -163,14 +163,14 @@ ShL2 apply_band_factors(const ShL2& sh, const std::array<std::array<double, 3>, 
   return out;
 }
 
-Status apply_window(const ShL2& unity_form, const Window& window, ShL2& out,
-                    WindowResult* result) noexcept {
+Status apply_window(const ShL2& unity_form, const Window& window, ShL2& out, WindowResult* result,
+                    bool l1) noexcept {
   WindowResult r;
   ShL2 windowed = unity_form;
   if (window.kind == WindowKind::Optimal) {
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
     r.factors = {{{kNaN, kNaN, kNaN}, {kNaN, kNaN, kNaN}, {kNaN, kNaN, kNaN}}};
-    for (int c = 0; c < kChannelCount; ++c) optimal_channel(unity_form, c, windowed, r);
+    for (int c = 0; c < kChannelCount; ++c) optimal_channel(unity_form, c, l1, windowed, r);
   } else if (window.kind == WindowKind::Sloan) {
     for (int c = 0; c < kChannelCount; ++c) r.factors[c] = sloan_channel(unity_form, c, r.impossible[c]);
   } else {
