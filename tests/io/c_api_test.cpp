@@ -483,6 +483,18 @@ TEST(CApiConvert, ExtractedLightsAndTheViewErrorMatchTheCommandLine) {
     EXPECT_EQ(out.lights[k].error_after_pct, light["unity_view_error_after_pct"].get<double>());
     EXPECT_LT(out.lights[k].error_after_pct, out.lights[k].error_before_pct);
   }
+  // The optimal window on a map that rings (sunrise): what it changed, as the document says.
+  shpack::io::ImageFile sunrise;
+  ASSERT_TRUE(shpack::io::read_image_file(hdri("sunrise.exr"), sunrise).ok());
+  shpack_convert_options optimal = convert_defaults();
+  optimal.window = "optimal";
+  const shpack_conversion fitted = convert_ok(equirect_map(sunrise), optimal);
+  const Json fitted_doc = command_document(dir, {hdri("sunrise.exr").string(), "--window", "optimal"});
+  expect_same_doubles(fitted.window_rms_change, fitted_doc["diagnostics"]["window_rms_change"], 3, "window_rms_change");
+  for (int c = 0; c < 3; ++c)
+    EXPECT_EQ(fitted.window_planes[c], fitted_doc["diagnostics"]["window_planes"][c].get<int>());
+  EXPECT_GT(fitted.window_planes[0] + fitted.window_planes[1] + fitted.window_planes[2], 0);
+  EXPECT_EQ(fitted.window_impossible, 0);
   // Without lights, the plain document's view error.
   const Json plain = command_document(dir, {hdri("studio.exr").string()});
   expect_view_error_is_document(convert_ok(map, convert_defaults()).view_error, plain);

@@ -71,6 +71,18 @@ TEST(JsonWriter, WritesTheViewErrorWhenTheDocumentHasOne) {
   EXPECT_EQ(d["unity_view_error_directions"], shpack::kViewErrorDirections);
 }
 
+TEST(JsonWriter, TheOptimalWindowWritesWhatItChangedInsteadOfFactors) {
+  ShDocument doc = sample_document();
+  EXPECT_FALSE(Json::parse(to_json(doc))["diagnostics"].contains("window_rms_change"));  // only with optimal
+  doc.window.kind = shpack::WindowKind::Optimal;
+  doc.sh.window.rms_change = {0.125, 0.0, 0.5};
+  doc.sh.window.planes = {3, 0, 7};
+  const Json j = Json::parse(to_json(doc));
+  EXPECT_EQ(j["options"]["window"], "optimal");
+  EXPECT_EQ(j["diagnostics"]["window_rms_change"], Json::array({0.125, 0.0, 0.5}));
+  EXPECT_EQ(j["diagnostics"]["window_planes"], Json::array({3, 0, 7}));
+}
+
 TEST(JsonWriter, ValuesAreThoseOfTheDocument) {
   const ShDocument doc = sample_document();
   const Json j = Json::parse(to_json(doc));

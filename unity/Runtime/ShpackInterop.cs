@@ -110,6 +110,9 @@ namespace Shpack
             public Result sh;
             public Light sun;
             public ViewError viewError;
+            [MarshalAs(UnmanagedType.ByValArray, SizeConst = 3)] public double[] windowRmsChange;
+            [MarshalAs(UnmanagedType.ByValArray, SizeConst = 3)] public int[] windowPlanes;
+            public int windowImpossible;
             public uint lightCount, lightCandidates;
             [MarshalAs(UnmanagedType.ByValArray, SizeConst = MaxExtractedLights)] public ExtractedLight[] lights;
         }

@@ -176,6 +176,8 @@ namespace Shpack
                 NegativeTexels = sh.negativeTexels,
                 Sun = conversion.hasSun == 1 ? LightOf(conversion.sun) : null,
                 Lights = lights,
+                WindowRmsChange = conversion.windowRmsChange,
+                WindowPlanes = conversion.windowPlanes,
                 LightCandidates = conversion.lightCandidates,
                 ViewError = new ShpackViewError
                 {

@@ -16,6 +16,8 @@ namespace Shpack
         public ShpackLight[] Lights;   // the lights of ShpackOptions.ExtractLights, in the order chosen
         public uint LightCandidates;   // how many candidates they were chosen from
         public ShpackViewError ViewError;  // what Unity shows against the exact E/pi of the map
+        public double[] WindowRmsChange;   // 3: the RMS change of E/pi the window made, over the RMS before it
+        public int[] WindowPlanes;         // 3: "optimal": the directions its cutting planes needed
 
         public SphericalHarmonicsL2 ToSphericalHarmonicsL2()
         {

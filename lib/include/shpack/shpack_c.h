@@ -198,6 +198,9 @@ typedef struct shpack_conversion {
   shpack_light sun;
   /* Appended after the first release (not written for a caller whose struct_size ends before them): */
   shpack_view_error view_error;
+  double window_rms_change[3]; /* per channel: the RMS change of E/pi the window made, over the RMS before it */
+  int32_t window_planes[3];    /* "optimal": per channel, the directions its cutting planes needed */
+  int32_t window_impossible;   /* bit c set: channel c rings with a negative mean, left as it was */
   uint32_t light_count;      /* lights[0 .. light_count - 1] hold the lights extracted, in the order chosen */
   uint32_t light_candidates; /* how many candidates they were chosen from */
   shpack_extracted_light lights[SHPACK_MAX_EXTRACTED_LIGHTS];

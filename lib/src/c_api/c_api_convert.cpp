@@ -181,6 +181,12 @@ void write_conversion(const shpack::Conversion& conversion, uint32_t size, shpac
   result.has_sun = conversion.sun.has_value() ? 1 : 0;
   if (conversion.sun) result.sun = light_of(*conversion.sun);
   result.view_error = shpack::c_api::view_error_of(conversion);
+  const shpack::WindowResult& window = conversion.sh.window;
+  for (int c = 0; c < 3; ++c) {
+    result.window_rms_change[c] = window.rms_change[c];
+    result.window_planes[c] = window.planes[c];
+    if (window.impossible[c]) result.window_impossible |= 1 << c;
+  }
   result.light_count = static_cast<uint32_t>(conversion.lights.size());
   result.light_candidates = static_cast<uint32_t>(conversion.light_candidates);
   for (std::size_t k = 0; k < conversion.lights.size(); ++k) {
