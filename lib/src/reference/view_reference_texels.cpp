@@ -77,7 +77,13 @@ Status ViewReference::add_rows(const ImageView& rows_in, std::uint32_t first_row
       detail::FinestCell& cell = cell_row[cx];
       const std::uint32_t x0 = cx * s.block_w, x1 = std::min(s.width, x0 + s.block_w);
       double sum[3] = {}, sum_cos[3] = {}, sum_sin[3] = {}, sum_pos[3] = {};
-      const double threshold = cell.heavy_threshold() / omega;
+      // A texel lighter than kHeavyShare of what its cell holds so far cannot be kept (the
+      // cell only gains, build_tree keeps only texels of at least that share of its total), so
+      // it is not offered: the texels kept are the same, the offers far fewer. The margin
+      // covers the rounding of weight x omega.
+      double so_far = 0;
+      for (int ch = 0; ch < 3; ++ch) so_far += cell.sums.positive[ch] + cell.sums.negative[ch];
+      const double threshold = std::max(cell.heavy_threshold(), detail::kHeavyShare * (1 - 1e-12) * so_far) / omega;
       for (std::uint32_t x = x0; x < x1; ++x) {
         const double cc = s.column_cos[x], ss = s.column_sin[x];
         double weight = 0;
