@@ -22,6 +22,7 @@
 #include "shpack/io/convert.h"
 #include "shpack/io/json_writer.h"
 #include "shpack/io/output_format.h"
+#include "shpack/io/stdin_spool.h"
 #include "validators.h"
 
 namespace shpack::cli {
@@ -47,16 +48,28 @@ std::string with_remedy(const io::IoStatus& st, const ConvertOptions& options) {
 
 // Converts one input (or the six `faces`, when there are any); writes `output`, or stdout
 // when it is empty. Returns the error line to report, or "" on success; runs on any thread.
+// `text` with every `from` replaced by `to`.
+std::string replaced(std::string text, const std::string& from, std::string_view to) {
+  for (std::size_t at = text.find(from); !from.empty() && at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+// `spooled`: the temporary file holding stdin (stdin_spool.h) when `input` is it; the
+// document and the messages then name it "stdin".
 std::string convert_one(const fs::path& input, const std::vector<std::string>& face_files, const fs::path& output,
-                        const io::ConvertSettings& settings, const ConvertOptions& options, io::OutputFormat format) {
+                        const io::ConvertSettings& settings, const ConvertOptions& options, io::OutputFormat format,
+                        bool spooled) {
   ShDocument doc;
   std::array<fs::path, kFaceNames.size()> faces;
   std::copy(face_files.begin(), face_files.end(), faces.begin());
   if (io::IoStatus st = face_files.empty() ? io::convert_env_map(input, settings, doc)
                                            : io::convert_cube_faces(faces, settings, doc);
       !st.ok()) {
-    return with_remedy(st, options);
+    const std::string message = with_remedy(st, options);
+    return spooled ? replaced(message, input.string(), io::kStdinName) : message;
   }
+  if (spooled) doc.source.files = {io::kStdinName};
   doc.radiance_frame = options.frame;
   const std::string json = io::format_document(doc, format);
   if (output.empty()) {
@@ -120,6 +133,11 @@ Plan plan_outputs(const ConvertOptions& options, io::OutputFormat format) {
     plan.problem = "convert: several inputs need --out-dir DIR";
     return plan;
   }
+  if (std::count(options.inputs.begin(), options.inputs.end(), "-") > 0 &&
+      (options.inputs.size() > 1 || !options.out_dir.empty())) {
+    plan.problem = "convert: - (the image on stdin) is the only input, without --out-dir";
+    return plan;
+  }
   std::map<fs::path, fs::path> input_of_output;
   const std::vector<fs::path> all_inputs(options.inputs.begin(), options.inputs.end());
   for (const std::string& input : options.inputs) {
@@ -167,7 +185,7 @@ std::string resolve_format(const ConvertOptions& options, io::OutputFormat& form
 CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
   CLI::App* cmd = app.add_subcommand("convert", "Environment maps to Unity L2 SH (JSON)");
   CLI::Option* inputs =
-      cmd->add_option("inputs", options.inputs, "Environment map files (EXR, HDR, PFM, PNG, ...)")->type_name("FILE");
+      cmd->add_option("inputs", options.inputs, "Environment map files (EXR, HDR, PFM, PNG, ...); - for one on stdin")->type_name("FILE");
   // 1 to 6 values for CLI11; plan_outputs refuses any count but six files or one pattern.
   cmd->add_option("--faces", options.faces,
                   "Six cube face files in Unity's order: +X -X +Y -Y +Z -Z (instead of inputs); "
@@ -284,7 +302,7 @@ int run_convert(const ConvertOptions& options) {
     report_usage_error("convert", problem);
     return kExitUsage;
   }
-  const Plan plan = plan_outputs(options, format);
+  Plan plan = plan_outputs(options, format);
   if (!plan.problem.empty()) {
     report_usage_error("convert", plan.problem);
     return kExitUsage;
@@ -329,11 +347,22 @@ int run_convert(const ConvertOptions& options) {
   const unsigned threads = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   const auto files = static_cast<unsigned>(std::min<std::size_t>(plan.jobs.size(), threads));
   convert.threads = std::max(1u, threads / files);
+  // `-`: the image on stdin, copied into a temporary file first (stdin_spool.h).
+  io::StdinSpool spool;
+  const bool from_stdin = plan.faces.empty() && plan.jobs.size() == 1 && plan.jobs[0].first == "-";
+  if (from_stdin) {
+    if (io::IoStatus st = spool.fill(io::stdin_budget(options.max_texels)); !st.ok()) {
+      report_error(st.message);
+      return kExitFailure;
+    }
+    plan.jobs[0].first = spool.path();
+  }
   bool all_ok = true;
   run_in_order<std::string>(
       plan.jobs.size(), files,
       [&](std::size_t k) {
-        return convert_one(plan.jobs[k].first, plan.faces, plan.jobs[k].second, settings, options, format);
+        return convert_one(plan.jobs[k].first, plan.faces, plan.jobs[k].second, settings, options, format,
+                           from_stdin);
       },
       [&](std::size_t, std::string& error) {
         if (!error.empty()) report_error(error);

@@ -7,6 +7,7 @@
 #include "report.h"
 #include "shpack/io/exr_writer.h"
 #include "shpack/io/map_source.h"
+#include "shpack/io/stdin_spool.h"
 #include "validators.h"
 
 namespace shpack::cli {
@@ -32,7 +33,7 @@ bool parse_irradiance_source(const std::string& text, IrradianceRequest& request
 
 CLI::App* add_irradiance_command(CLI::App& app, IrradianceOptions& options) {
   CLI::App* cmd = app.add_subcommand("irradiance", "Write E/pi of a map as an image: what L2 keeps and loses");
-  cmd->add_option("input", options.input, "The environment map (any format convert reads)")->type_name("FILE")->required();
+  cmd->add_option("input", options.input, "The environment map (any format convert reads); - for one on stdin")->type_name("FILE")->required();
   cmd->add_option("-o,--output", options.output, "The OpenEXR file to write (float RGB); - for stdout")
       ->type_name("FILE")
       ->required();
@@ -81,13 +82,26 @@ int run_irradiance(const IrradianceOptions& options) {
   io::MapSource source;
   io::SourceOptions source_options;
   source_options.layout = options.input_layout;
-  if (io::IoStatus st = source.open(options.input, source_options); !st.ok()) {
-    report_error(st.message);
+  io::StdinSpool spool;  // `-`: the image on stdin (stdin_spool.h)
+  if (options.input == "-") {
+    if (io::IoStatus st = spool.fill(io::stdin_budget(source_options.max_texels)); !st.ok()) {
+      report_error(st.message);
+      return kExitFailure;
+    }
+  }
+  const std::string path = options.input == "-" ? spool.path().string() : options.input;
+  // A message names the file first (io_status.h): the temporary copy is named as stdin.
+  const auto shown = [&](const std::string& message) {
+    if (options.input != "-" || message.rfind(path, 0) != 0) return message;
+    return std::string(io::kStdinName).append(message, path.size());
+  };
+  if (io::IoStatus st = source.open(path, source_options); !st.ok()) {
+    report_error(shown(st.message));
     return kExitFailure;
   }
   MapImage map;
   if (io::IoStatus st = source.read_whole(map, options.threads); !st.ok()) {
-    report_error(st.message);
+    report_error(shown(st.message));
     return kExitFailure;
   }
   ConvertOptions convert;
@@ -96,7 +110,7 @@ int run_irradiance(const IrradianceOptions& options) {
   convert.finish.colour_matrix = source.info().colour.matrix;
   IrradianceImage image;
   if (Status st = render_irradiance(map, convert, request, image); !st.ok()) {
-    report_error(options.input + ": " + st.what);
+    report_error(shown(std::string(path).append(": ").append(st.what)));
     return st.code == Errc::InvalidArgument ? kExitUsage : kExitFailure;
   }
   if (io::IoStatus st = io::write_exr_rgb(options.output, image.width, image.height, image.rgb); !st.ok()) {

@@ -84,6 +84,13 @@ TEST(IrradianceCli, BadRequestsAreOneLineErrors) {
   for (const CliRun* r : {&run})
     EXPECT_EQ(std::count(r->err.begin(), r->err.end(), '\n'), 1) << r->err;
   EXPECT_FALSE(fs::exists(out));  // nothing was written by a failure
+  // `-`: the map on stdin, and its errors named so.
+  run = run_shpack(dir, {"irradiance", "-", "-o", out, "--source", "sh", "--size", "4"}, map);
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(fs::exists(out));
+  run = run_shpack(dir, {"irradiance", "-", "-o", out, "--source", "riemann:100"}, cross);
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_EQ(run.err.rfind("shpack: stdin: ", 0), 0u) << run.err;
 }
 
 }  // namespace
