@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -18,11 +17,14 @@
 #include "enum_option.h"
 #include "output_check.h"
 #include "report.h"
+#include "shpack/convert_request.h"
 #include "shpack/io/atomic_write.h"
 #include "shpack/io/convert.h"
+#include "shpack/io/error_remedy.h"
 #include "shpack/io/json_writer.h"
 #include "shpack/io/output_format.h"
 #include "shpack/io/stdin_spool.h"
+#include "shpack/option_choices.h"
 #include "validators.h"
 
 namespace shpack::cli {
@@ -34,20 +36,6 @@ namespace fs = std::filesystem;
 constexpr std::string_view kFacePlaceholder = "{face}";
 constexpr std::array<std::string_view, 6> kFaceNames = {"px", "nx", "py", "ny", "pz", "nz"};
 
-// The io messages state the facts; the remedy is a command-line matter, so it is added here.
-// Naming the layout is no remedy when one is named already (a shape that does not fit it):
-// the message then lists the layouts that would fit, which is the remedy.
-std::string with_remedy(const io::IoStatus& st, const ConvertOptions& options) {
-  switch (st.code) {
-    case io::IoErrc::NonFiniteTexel: return st.message + "; use --nonfinite=zero to replace them";
-    case io::IoErrc::UnknownLayout:
-      return options.layout == Layout::Auto ? st.message + "; name the layout with --layout" : st.message;
-    default: return st.message;
-  }
-}
-
-// Converts one input (or the six `faces`, when there are any); writes `output`, or stdout
-// when it is empty. Returns the error line to report, or "" on success; runs on any thread.
 // `text` with every `from` replaced by `to`.
 std::string replaced(std::string text, const std::string& from, std::string_view to) {
   for (std::size_t at = text.find(from); !from.empty() && at != std::string::npos; at = text.find(from, at + to.size()))
@@ -55,6 +43,8 @@ std::string replaced(std::string text, const std::string& from, std::string_view
   return text;
 }
 
+// Converts one input (or the six `faces`, when there are any); writes `output`, or stdout
+// when it is empty. Returns the error line to report, or "" on success; runs on any thread.
 // `spooled`: the temporary file holding stdin (stdin_spool.h) when `input` is it; the
 // document and the messages then name it "stdin".
 std::string convert_one(const fs::path& input, const std::vector<std::string>& face_files, const fs::path& output,
@@ -66,7 +56,7 @@ std::string convert_one(const fs::path& input, const std::vector<std::string>& f
   if (io::IoStatus st = face_files.empty() ? io::convert_env_map(input, settings, doc)
                                            : io::convert_cube_faces(faces, settings, doc);
       !st.ok()) {
-    const std::string message = with_remedy(st, options);
+    const std::string message = io::with_remedy(st, options.layout);
     return spooled ? replaced(message, input.string(), io::kStdinName) : message;
   }
   if (spooled) doc.source.files = {io::kStdinName};
@@ -200,23 +190,14 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
   cmd->add_option("--out-dir", options.out_dir, "Write DIR/<stem>.json (or the format's extension) for each input")
       ->type_name("DIR")
       ->excludes(output);
-  add_enum_option(*cmd, "--layout", options.layout,
-                  {{"auto", Layout::Auto}, {"equirect", Layout::Equirect},
-                   {"hcross", Layout::HorizontalCross}, {"vcross", Layout::VerticalCross},
-                   {"hstrip", Layout::HorizontalStrip}, {"vstrip", Layout::VerticalStrip},
-                   {"octahedral", Layout::Octahedral}, {"angular", Layout::Angular},
-                   {"mirrorball", Layout::MirrorBall}},
+  add_enum_option(*cmd, "--layout", options.layout, kLayoutChoices,
                   "Image layout; auto: 2:1 equirect, 4:3/3:4 crosses, 6:1/1:6 strips, 1x1 uniform "
                   "(default auto; a square image needs octahedral, angular or mirrorball)");
-  add_enum_option(*cmd, "--cube-frame", options.cube_frame,
-                  {{"unity", CubeFrame::Unity}, {"gl", CubeFrame::Gl}, {"threejs", CubeFrame::ThreeJs}},
+  add_enum_option(*cmd, "--cube-frame", options.cube_frame, kCubeFrameChoices,
                   "World the cube faces were made in: unity, gl (z mirrored), threejs (default unity)");
   cmd->add_option("--layer", options.layer, "EXR part or channel layer to read (e.g. diffuse for diffuse.R/G/B)")
       ->type_name("NAME");
-  add_enum_option(*cmd, "--colorspace", options.colorspace,
-                  {{"auto", ColorSpace::Auto}, {"linear-rec709", ColorSpace::LinearRec709},
-                   {"acescg", ColorSpace::AcesCg}, {"aces2065-1", ColorSpace::Aces2065_1},
-                   {"linear-p3-d65", ColorSpace::LinearP3D65}, {"linear-rec2020", ColorSpace::LinearRec2020}},
+  add_enum_option(*cmd, "--colorspace", options.colorspace, kColorSpaceChoices,
                   "Primaries of the input's linear RGB (default auto: the EXR's chromaticities, else Rec. 709)");
   cmd->add_option("--method", options.method,
                   "exact, center, mip:K, mc:N, qmc:N, fib:N, is:N, riemann:N, cube:N, "
@@ -233,11 +214,9 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
           std::to_string(kDefaultMethodSeed) + ")")
       ->type_name("N")
       ->check(unsigned_integer());
-  add_enum_option(*cmd, "--nonfinite", options.nonfinite,
-                  {{"error", NonFinite::Error}, {"zero", NonFinite::Zero}},
+  add_enum_option(*cmd, "--nonfinite", options.nonfinite, kNonFiniteChoices,
                   "NaN/Inf texels: fail, or count them as 0 (default error)");
-  add_enum_option(*cmd, "--negative", options.negative,
-                  {{"keep", Negative::Keep}, {"clamp", Negative::Clamp}},
+  add_enum_option(*cmd, "--negative", options.negative, kNegativeChoices,
                   "Negative texels: keep them, or count them as 0 (default keep)");
   cmd->add_option("--intensity", options.intensity, "Multiply the radiance by K, a number >= 0 (default 1)")
       ->type_name("K")
@@ -273,10 +252,7 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
                   "Output: JSON, a C# SphericalHarmonicsL2, an HLSL include, Unity YAML, a three.js LightProbe "
                   "(.json), cmgen's --sh-shader text for Filament (.txt), a glTF EXT_lights_image_based light "
                   "(.gltf) (default: from -o's extension, else json)");
-  std::vector<std::pair<std::string, EngineFrame>> frames;
-  for (std::size_t k = 0; k < kEngineFrames.size(); ++k)
-    frames.emplace_back(kEngineFrames[k].name, static_cast<EngineFrame>(k));
-  add_enum_option(*cmd, "--frame", options.frame, frames,
+  add_enum_option(*cmd, "--frame", options.frame, kEngineFrameChoices,
                   "Frame of the JSON's radiance_sh: unity, threejs (z mirrored), gltf (x mirrored), unreal "
                   "(Z up, Condon-Shortley signs), blender (Z up), filament (default unity; docs/conventions.md)");
   cmd->add_flag("--l1", options.l1, "L1 only (band 2 removed), for Light Probe Proxy Volumes");
@@ -291,10 +267,33 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
   return cmd;
 }
 
+namespace {
+
+// The user-level options of the conversion, as the core translates them (convert_request.h).
+ConvertRequest request_of(const ConvertOptions& options) {
+  ConvertRequest request;
+  request.method = options.method;
+  request.seed = options.seed;
+  request.nonfinite = options.nonfinite;
+  request.negative = options.negative;
+  request.intensity = options.intensity;
+  request.exposure = options.exposure;
+  request.rotate_deg = options.rotate_deg;
+  request.window = options.window;
+  request.l1 = options.l1;
+  request.extract_sun = options.extract_sun;
+  request.extract_lights = options.extract_lights;
+  request.threads = options.threads;
+  return request;
+}
+
+}  // namespace
+
 int run_convert(const ConvertOptions& options) {
-  const double factor = options.intensity * std::exp2(options.exposure);
-  if (!std::isfinite(factor)) {
-    report_usage_error("convert", "convert: --intensity times 2^--exposure is not a finite number");
+  io::ConvertSettings settings;
+  // The values CLI11 checked are right by now: what is left is the factor and the seed.
+  if (const std::string problem = to_convert_options(request_of(options), settings.convert); !problem.empty()) {
+    report_usage_error("convert", std::string("convert: ").append(problem));
     return kExitUsage;
   }
   io::OutputFormat format = io::OutputFormat::Json;
@@ -316,26 +315,8 @@ int run_convert(const ConvertOptions& options) {
     }
   }
 
-  io::ConvertSettings settings;
   settings.source = {options.layout, options.layer, options.colorspace, options.cube_frame, options.max_texels};
   shpack::ConvertOptions& convert = settings.convert;
-  if (!parse_method(options.method, convert.method).ok()) return kExitUsage;  // checked by CLI11
-  if (options.seed) {
-    // "mc:N:SEED" and --seed both name a seed; taking either silently could surprise.
-    if (options.method.find(':') != options.method.rfind(':')) {
-      report_usage_error("convert", "convert: give the seed once, in --method or with --seed");
-      return kExitUsage;
-    }
-    convert.method.seed = *options.seed;
-  }
-  convert.nonfinite = options.nonfinite;
-  convert.negative = options.negative;
-  convert.extract_sun = options.extract_sun;
-  convert.extract_lights = options.extract_lights;
-  convert.finish.intensity = factor;
-  convert.finish.rotate_deg = options.rotate_deg;
-  if (!parse_window(options.window, convert.finish.window).ok()) return kExitUsage;  // checked by CLI11
-  convert.finish.l1 = options.l1;
   if (!plan.faces.empty()) {  // the layout is known before anything is read
     if (Status st = check_convert_options(convert, Layout::Faces, options.cube_frame); !st.ok()) {
       report_usage_error("convert", std::string("convert: --faces: ") + st.what);

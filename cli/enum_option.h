@@ -6,9 +6,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include <array>
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "shpack/option_choices.h"
 
 namespace shpack::cli {
 
@@ -34,6 +38,15 @@ CLI::Option* add_enum_option(CLI::App& cmd, const std::string& name, Enum& targe
           help)
       ->transform(CLI::IsMember(names, CLI::ignore_case).description(""))
       ->type_name(type_name);
+}
+
+// The same, for one of the core's tables of names (option_choices.h).
+template <class Enum, std::size_t N>
+CLI::Option* add_enum_option(CLI::App& cmd, const std::string& name, Enum& target,
+                             const std::array<OptionChoice<Enum>, N>& choices, const std::string& help) {
+  std::vector<std::pair<std::string, Enum>> pairs;
+  for (const OptionChoice<Enum>& choice : choices) pairs.emplace_back(std::string(choice.name), choice.value);
+  return add_enum_option(cmd, name, target, pairs, help);
 }
 
 }  // namespace shpack::cli

@@ -23,6 +23,8 @@ packages=(
   help2man                       # the man page that cmake --install installs, from shpack --help
   libfilament-tools              # tests/io: cmgen, against which --format filament is checked
   nodejs                         # tests/io: node runs three.js on --format threejs's output
+  pybind11-dev python3-dev       # python/: the shpack module (SHPACK_BUILD_PYTHON)
+  python3-numpy                  # tests/python: the module's arrays, with Debian's /usr/bin/python3
 )
 
 missing=()

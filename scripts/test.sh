@@ -4,7 +4,7 @@
 # except the `large` tests; then the libFuzzer targets (clang, build-fuzz/), each for a
 # bounded time over its seed corpus; then the `large` tests (peak RSS of a streaming convert
 # of a 16384 x 8192 map), which only mean something without ASan, from a Release build
-# (build-large/). Exits non-zero on the first failure.
+# (build-large/), with the Python module's tests. Exits non-zero on the first failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -28,6 +28,9 @@ cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWith
 step cmake --build build-fuzz -j"$(nproc)" --target shpack_fuzzers
 step ctest --test-dir build-fuzz --output-on-failure -j2 -L fuzz
 
-cmake -S . -B build-large -DCMAKE_BUILD_TYPE=Release -DSHPACK_WERROR=ON -DSHPACK_BUILD_BENCH=OFF
-step cmake --build build-large -j"$(nproc)" --target shpack shpack_large_tests
-step ctest --test-dir build-large --output-on-failure -L large
+# The same Release build holds the Python module (python/), tested with Debian's
+# /usr/bin/python3 and NumPy against the command it was built with (label python).
+cmake -S . -B build-large -DCMAKE_BUILD_TYPE=Release -DSHPACK_WERROR=ON -DSHPACK_BUILD_BENCH=OFF \
+  -DSHPACK_BUILD_PYTHON=ON
+step cmake --build build-large -j"$(nproc)" --target shpack shpack_large_tests shpack_python
+step ctest --test-dir build-large --output-on-failure -L 'large|python'

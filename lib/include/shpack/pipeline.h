@@ -65,6 +65,13 @@ struct MapImage {
   float* writable = nullptr;
 };
 
+// Makes an equirect map writable for the transforms: a packed F32 copy of map.image in
+// `storage` (F16 values widened exactly), which map.image then views and map.writable points
+// at, so that the caller's own pixels are never written. Other layouts are left as they are
+// (no transform reads them). Errors: BadView for a view resolve_view refuses, OutOfMemory
+// when the copy cannot be allocated; `map` is then unchanged.
+Status make_writable(MapImage& map, std::vector<float>& storage) noexcept;
+
 // ---- Stage 4 --------------------------------------------------------------------------
 
 struct FinishOptions {

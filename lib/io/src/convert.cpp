@@ -5,30 +5,16 @@
 #include <utility>
 #include <vector>
 
+#include "convert_errors.h"
 #include "shpack/io/sha256.h"
 
 namespace shpack::io {
 namespace {
 
 namespace fs = std::filesystem;
-
-IoStatus core_error(const fs::path& path, const Status& st) {
-  const IoErrc code = st.code == Errc::InvalidArgument ? IoErrc::InvalidArgument
-                      : st.code == Errc::OutOfRange    ? IoErrc::Unsupported
-                                                       : IoErrc::Core;
-  return IoStatus::error(code, path, st.what);
-}
-
-// The one message for NaN/Inf texels under NonFinite::Error: how many, and the first.
-IoStatus nonfinite_error(const MapSource& source, const ProjectStats& seen, const MethodSpec& method) {
-  const bool reads = !(method.method == SamplingMethod::Exact || method.method == SamplingMethod::Center);
-  const std::string what = reads ? " NaN/Inf texel reads by " + std::string(method_name(method).view())
-                                 : std::string(" NaN/Inf texels");
-  return IoStatus::error(IoErrc::NonFiniteTexel, source.path(seen.first_nonfinite_face),
-                         std::to_string(seen.nonfinite_texels) + what + " (first at x=" +
-                             std::to_string(seen.first_nonfinite_x) + ", y=" + std::to_string(seen.first_nonfinite_y) +
-                             ")");
-}
+using detail::check_settings;
+using detail::core_error;
+using detail::nonfinite_error;
 
 // Stage 3 streamed: bands of rows into the core's EquirectProjector, NaN/Inf counted.
 // The same bands go into the reference E/pi of the view error, sampled here.
@@ -67,7 +53,7 @@ IoStatus run_stages(MapSource& source, const ConvertSettings& settings, Conversi
     ProjectStats stats;
     ViewSamples samples;
     if (IoStatus st = project_streamed(source, options, radiance, stats, samples); !st.ok()) return st;
-    if (!apply_nonfinite_policy(stats, options.nonfinite).ok()) return nonfinite_error(source, stats, options.method);
+    if (!apply_nonfinite_policy(stats, options.nonfinite).ok()) return nonfinite_error(path, stats, options.method);
     if (Status st = finish_conversion(radiance, stats, Extraction{}, options.finish, &samples, out); !st.ok())
       return core_error(path, st);
     return IoStatus::success();
@@ -75,15 +61,11 @@ IoStatus run_stages(MapSource& source, const ConvertSettings& settings, Conversi
   MapImage map;
   if (IoStatus st = source.read_whole(map, options.threads); !st.ok()) return st;
   ProjectStats seen;
-  if (Status st = convert_map(map, options, out, &seen); !st.ok())
-    return st.code == Errc::NonFiniteTexel ? nonfinite_error(source, seen, options.method) : core_error(path, st);
-  return IoStatus::success();
-}
-
-// finish_projection's option checks, before any image is read.
-IoStatus check_settings(const fs::path& path, const ConvertSettings& settings) {
-  if (Status st = check_finish_options(settings.convert.finish); !st.ok()) return core_error(path, st);
-  if (Status st = validate_method(settings.convert.method); !st.ok()) return core_error(path, st);
+  if (Status st = convert_map(map, options, out, &seen); !st.ok()) {
+    if (st.code == Errc::NonFiniteTexel)
+      return nonfinite_error(source.path(seen.first_nonfinite_face), seen, options.method);
+    return core_error(path, st);
+  }
   return IoStatus::success();
 }
 

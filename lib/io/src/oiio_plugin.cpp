@@ -4,11 +4,15 @@
 
 #include <filesystem>
 #include <system_error>
+#include <vector>
 
 namespace shpack::io::detail {
 namespace {
 
 namespace fs = std::filesystem;
+
+// An address inside this shared object, for dladdr.
+constexpr char kOwnModuleMarker = 0;
 
 struct Loaded {
   OiioPlugin plugin;
@@ -40,6 +44,18 @@ bool load(const fs::path& file, OiioPlugin& plugin, std::string& why) {
   return true;  // never closed: decoders made by it may live until exit
 }
 
+// The folder of the shared object this code is linked into, when it is not the executable
+// (lib/io inside the Python module, python/CMakeLists.txt); empty otherwise.
+fs::path own_module_folder(const fs::path& exe) {
+  Dl_info info{};
+  if (::dladdr(&kOwnModuleMarker, &info) == 0 || info.dli_fname == nullptr)
+    return {};
+  std::error_code ec;
+  const fs::path module = fs::canonical(info.dli_fname, ec);
+  if (ec || module == fs::canonical(exe, ec)) return {};
+  return module.parent_path();
+}
+
 Loaded find_and_load() {
   Loaded loaded;
   std::error_code ec;
@@ -50,16 +66,25 @@ Loaded find_and_load() {
   }
   const fs::path beside = exe.parent_path() / kOiioPluginFile;
   const fs::path installed = (exe.parent_path() / SHPACK_PLUGIN_RELDIR / kOiioPluginFile).lexically_normal();
+  const fs::path module_folder = own_module_folder(exe);
+  std::vector<fs::path> candidates = {beside, installed};
+  if (!module_folder.empty()) candidates.insert(candidates.begin(), module_folder / kOiioPluginFile);
   std::string why;
-  for (const fs::path& file : {beside, installed}) {
+  for (const fs::path& file : candidates) {
     if (!fs::exists(file, ec)) continue;
     loaded.ok = load(file, loaded.plugin, why);
     if (loaded.ok) return loaded;
     loaded.problem = "shpack's OpenImageIO module cannot be used (" + why + ")";
     return loaded;
   }
-  loaded.problem = "shpack's OpenImageIO module " + std::string(kOiioPluginFile) + " is in neither " +
-                   exe.parent_path().string() + " nor " + installed.parent_path().string();
+  loaded.problem = std::string("shpack's OpenImageIO module ").append(kOiioPluginFile);
+  if (module_folder.empty()) {
+    loaded.problem.append(" is in neither ").append(exe.parent_path().string());
+    loaded.problem.append(" nor ").append(installed.parent_path().string());
+  } else {
+    loaded.problem.append(" is in none of ").append(module_folder.string()).append(", ");
+    loaded.problem.append(exe.parent_path().string()).append(" and ").append(installed.parent_path().string());
+  }
   return loaded;
 }
 

@@ -7,7 +7,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <new>
 #include <vector>
 
 #include "c_api_common.h"
@@ -76,33 +75,6 @@ Status resolve_map_layout(const shpack_map& map, shpack::Layout& layout) {
   return Status::success();
 }
 
-// A packed F32 copy of a resolved view, for the transforms that write into the image
-// (pipeline.h MapImage::writable); the projector reads the same floats from it.
-Status packed_copy(const shpack::ImageView& view, std::vector<float>& pixels) {
-  const std::size_t row = std::size_t{view.width} * view.channels;
-  try {
-    pixels.resize(row * view.height);
-  } catch (const std::bad_alloc&) {
-    return Status::error(Errc::OutOfMemory, "cannot allocate a copy of the image for extract_sun or extract_lights");
-  }
-  for (std::uint32_t y = 0; y < view.height; ++y) {
-    for (std::uint32_t x = 0; x < view.width; ++x) {
-      const std::byte* texel = view.pixel(x, y);
-      float* out = pixels.data() + y * row + std::size_t{x} * view.channels;
-      for (std::uint32_t c = 0; c < view.channels; ++c) {
-        if (view.type == shpack::PixelType::F32) {
-          std::memcpy(out + c, texel + 4 * c, sizeof(float));
-        } else {
-          std::uint16_t half;
-          std::memcpy(&half, texel + 2 * c, sizeof half);
-          out[c] = shpack::half_to_float(half);
-        }
-      }
-    }
-  }
-  return Status::success();
-}
-
 // Stage 1 for pixels the caller holds: the MapImage of a shpack_map. `copy` receives the
 // writable pixels when a transform needs them.
 Status to_map_image(const shpack_map& map, bool writable, shpack::MapImage& out, std::vector<float>& copy) {
@@ -116,10 +88,8 @@ Status to_map_image(const shpack_map& map, bool writable, shpack::MapImage& out,
       if (Status st = shpack::c_api::to_view(map.faces[f], image.faces[f]); !st.ok()) return st;
   } else {
     if (Status st = shpack::c_api::to_view(map.image, image.image); !st.ok()) return st;
-    if (writable && image.layout == shpack::Layout::Equirect) {
-      if (Status st = packed_copy(image.image, copy); !st.ok()) return st;
-      image.image = shpack::make_view(copy.data(), image.image.width, image.image.height, image.image.channels);
-      image.writable = copy.data();
+    if (writable) {
+      if (Status st = shpack::make_writable(image, copy); !st.ok()) return st;
     }
   }
   out = image;
