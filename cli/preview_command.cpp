@@ -1,5 +1,6 @@
 #include "preview_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -13,6 +14,7 @@
 #include "shpack/io/atomic_write.h"
 #include "shpack/io/json_reader.h"
 #include "shpack/io/preview.h"
+#include "shpack/io/sha256.h"
 
 namespace shpack::cli {
 namespace {
@@ -46,6 +48,11 @@ CLI::App* add_preview_command(CLI::App& app, PreviewOptions& options) {
                    {"vstrip", Layout::VerticalStrip}, {"octahedral", Layout::Octahedral},
                    {"angular", Layout::Angular}, {"mirrorball", Layout::MirrorBall}},
                   "How --input holds the sphere, as convert's --layout (default auto)");
+  cmd->add_option_function<std::size_t>(
+         "--probe", [&options](std::size_t n) { options.probe = n; },
+         "For a bake document: the probe to show, from 0")
+      ->type_name("N")
+      ->check(unsigned_integer());
   cmd->add_option("--size", options.size, "Sphere diameter in pixels, 32 to 1024 (default 128)")
       ->type_name("PIXELS")
       ->check(unsigned_in(32, 1024));
@@ -66,7 +73,7 @@ int run_preview(const PreviewOptions& options) {
     return kExitUsage;
   }
   io::ShJsonContent content;
-  if (io::IoStatus st = io::read_sh_json(options.document, content); !st.ok()) {
+  if (io::IoStatus st = io::read_sh_json(options.document, content, options.probe); !st.ok()) {
     report_error(st.message);
     return kExitFailure;
   }
@@ -80,6 +87,13 @@ int run_preview(const PreviewOptions& options) {
   if (io::IoStatus st = io::render_preview(content, settings, image, report); !st.ok()) {
     report_error(st.message);
     return kExitFailure;
+  }
+  if (!options.input.empty() && !content.sha256.empty()) {  // the reference should be the document's source
+    std::string digest;
+    if (io::sha256_file(options.input, digest).ok() &&
+        std::find(content.sha256.begin(), content.sha256.end(), digest) == content.sha256.end())
+      std::fprintf(stderr, "shpack: warning: %s is not the file the document was made from (its SHA-256 is not in "
+                   "source.sha256); the error map compares different lighting\n", options.input.c_str());
   }
   if (io::IoStatus st = io::write_png(output, image); !st.ok()) {
     report_error(st.message);

@@ -8,7 +8,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "shpack/layout.h"
@@ -21,6 +23,7 @@ struct PreviewOptions {
   std::string input;     // --input: the map the document came from, or empty
   Layout input_layout = Layout::Auto;  // --input-layout
   std::uint32_t size = 128;  // --size: sphere diameter in pixels
+  std::optional<std::size_t> probe;  // --probe N: the probe of a bake document
 };
 
 CLI::App* add_preview_command(CLI::App& app, PreviewOptions& options);

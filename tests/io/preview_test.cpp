@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
@@ -289,4 +290,67 @@ TEST(Preview, CommandErrorsNameTheFileAndKeepTheOutput) {
 }
 
 }  // namespace
+// A document with lights taken out: what Unity shows is the SH plus each light's Lambert term
+// (view_error.h), so the preview adds them to every panel and to the mean its tone mapping
+// and percentages use. The same map with its sun taken out then shows the same total light:
+// the sun's Unity irradiance E_c = d . m_c is its removed flux within a factor cos a
+// (light_extraction.h, a <= 5 degrees: 0.4 %), and a light's mean over the sphere is E/(4 pi).
+TEST(Preview, ExtractedLightsAreWhatUnityShowsAndAreMarked) {
+  const ScratchDir dir;
+  const std::string map = shpack_io_test::hdri("sunrise.exr");
+  ASSERT_EQ(run_shpack(dir, {"convert", map, "-o", (dir / "plain.json").string()}).exit_code, 0);
+  ASSERT_EQ(run_shpack(dir, {"convert", map, "--extract-sun", "-o", (dir / "sun.json").string()}).exit_code, 0);
+  ShJsonContent plain, sun;
+  ASSERT_TRUE(read_sh_json(dir / "plain.json", plain).ok());
+  ASSERT_TRUE(read_sh_json(dir / "sun.json", sun).ok());
+  EXPECT_TRUE(plain.lights.empty());
+  ASSERT_EQ(sun.lights.size(), 1u);
+  PreviewSettings settings;
+  settings.size = 32;
+  settings.reference = map;
+  Rgb8Image image;
+  PreviewReport with_plain, with_sun;
+  ASSERT_TRUE(render_preview(plain, settings, image, with_plain).ok());
+  ASSERT_TRUE(render_preview(sun, settings, image, with_sun).ok());
+  EXPECT_NEAR(with_sun.mean_luminance, with_plain.mean_luminance, 0.005 * with_plain.mean_luminance);
+  // The convert document's view error: 24.7 % plain, 4.7 % with the sun (docs/accuracy.md);
+  // the preview's luminance error over its pixels tells the same story.
+  EXPECT_LT(with_sun.max_abs_error, 0.5 * with_plain.max_abs_error);
+  // The light's ring, cyan, on the E/pi panel around the sun's direction.
+  std::size_t cyan = 0;
+  for (std::uint32_t y = 0; y < with_sun.sh.height; ++y)
+    for (std::uint32_t x = 0; x < with_sun.sh.width; ++x)
+      if (pixel(image, with_sun.sh.x + x, with_sun.sh.y + y) == Rgb{0, 255, 255}) ++cyan;
+  EXPECT_GT(cyan, 8u);
+}
+
+TEST(Preview, ABakeDocumentsProbeAndAWrongInputAreSaid) {
+  const ScratchDir dir;
+  const std::string map = shpack_io_test::hdri("sunset.exr");
+  std::string scene = R"({"probes": [[0, 1, 0], [1, 1, -1]], "environment": {"type": "map", "path": ")";
+  scene.append(map).append(R"("}, "effects": ["environment"]})");
+  shpack_io_test::write_bytes(dir / "scene.json", std::vector<char>(scene.begin(), scene.end()));
+  ASSERT_EQ(run_shpack(dir, {"bake", (dir / "scene.json").string(), "-o", (dir / "bake.json").string()}).exit_code, 0);
+  const std::string png = (dir / "p.png").string();
+  shpack_io_test::CliRun run = run_shpack(dir, {"preview", (dir / "bake.json").string(), "-o", png});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.err.find("a bake document of 2 probes: choose one (preview --probe N)"), std::string::npos) << run.err;
+  run = run_shpack(dir, {"preview", (dir / "bake.json").string(), "-o", png, "--probe", "1"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  run = run_shpack(dir, {"preview", (dir / "bake.json").string(), "-o", png, "--probe", "2"});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.err.find("no probe 2 (it has 2)"), std::string::npos) << run.err;
+  // A probe's coefficients are those the bake document holds for it.
+  ShJsonContent probe;
+  ASSERT_TRUE(read_sh_json(dir / "bake.json", probe, 1).ok());
+  const nlohmann::json doc = nlohmann::json::parse(shpack_io_test::text_of(dir / "bake.json"));
+  EXPECT_EQ(probe.shader.SHAr[3], doc["probes"][1]["shader"]["unity_SHAr"][3].get<float>());
+  // --input that is not the document's source: a warning, and the image is still made.
+  ASSERT_EQ(run_shpack(dir, {"convert", map, "-o", (dir / "s.json").string()}).exit_code, 0);
+  run = run_shpack(dir, {"preview", (dir / "s.json").string(), "-o", png, "--input",
+                         shpack_io_test::hdri("city.exr").string()});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("is not the file the document was made from"), std::string::npos) << run.err;
+}
+
 }  // namespace shpack::io

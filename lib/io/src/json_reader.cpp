@@ -4,8 +4,11 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "shpack/io/file_checks.h"
 #include "shpack/io/sh_record_json.h"
@@ -50,7 +53,42 @@ auto elements(const Json& value, const std::string& pointer, Read read) {
   return out;
 }
 
-ShJsonContent content_of(const Json& doc) {
+// radiance_sh, sphericalHarmonicsL2 and shader of `record` (pointer `at`).
+void read_coefficients(const Json& record, const std::string& at, ShJsonContent& out) {
+  const auto doubles = [](const Json& v, const std::string& p) { return elements<kShCount>(v, p, number); };
+  const auto floats = [](const Json& v, const std::string& p) { return elements<kShCount>(v, p, float32); };
+  out.radiance.c = elements<kChannelCount>(member(record, at, "radiance_sh"), at + "/radiance_sh", doubles);
+  out.unity_sh =
+      elements<kChannelCount>(member(record, at, "sphericalHarmonicsL2"), at + "/sphericalHarmonicsL2", floats);
+  const Json& shader = member(record, at, "shader");
+  for (const auto& [key, vector] : kShaderVectorKeys) {
+    const std::string pointer = at + "/shader/" + key;
+    out.shader.*vector = elements<4>(member(shader, at + "/shader", key), pointer, float32);
+  }
+}
+
+// The Unity light of a "sun" or "lights" record (docs/json-format.md) at `at`.
+UnitySunLight light_of(const Json& record, const std::string& at) {
+  const std::string u = at + "/unity_light";
+  const Json& unity = member(record, at, "unity_light");
+  UnitySunLight light;
+  const std::array<double, 3> forward = elements<3>(member(unity, u, "forward"), u + "/forward", number);
+  light.forward = {forward[0], forward[1], forward[2]};
+  light.colour = elements<3>(member(unity, u, "color"), u + "/color", number);
+  light.intensity = number(member(unity, u, "intensity"), u + "/intensity");
+  return light;
+}
+
+// Every light Unity adds to the SH: the sun (unless null) and the lights.
+void read_lights(const Json& doc, std::vector<UnitySunLight>& lights) {
+  if (const auto sun = doc.find("sun"); sun != doc.end() && !sun->is_null()) lights.push_back(light_of(*sun, "/sun"));
+  if (const auto list = doc.find("lights"); list != doc.end()) {
+    if (!list->is_array()) throw BadValue{"/lights", "expected an array"};
+    for (std::size_t k = 0; k < list->size(); ++k) lights.push_back(light_of((*list)[k], "/lights/" + std::to_string(k)));
+  }
+}
+
+ShJsonContent content_of(const Json& doc, std::optional<std::size_t> probe) {
   const Json& version = member(doc, "", "schema_version");
   if (!version.is_number_integer() || version.get<std::int64_t>() != kSchemaVersion) {
     // A primitive is quoted (cut short), a structure named: a nested one is never dumped.
@@ -61,23 +99,27 @@ ShJsonContent content_of(const Json& doc) {
                                           std::to_string(kSchemaVersion) + ")"};
   }
   ShJsonContent out;
-  const auto doubles = [](const Json& v, const std::string& p) {
-    return elements<kShCount>(v, p, number);
-  };
-  const auto floats = [](const Json& v, const std::string& p) {
-    return elements<kShCount>(v, p, float32);
-  };
-  out.radiance.c = elements<kChannelCount>(member(doc, "", "radiance_sh"), "/radiance_sh", doubles);
-  out.unity_sh = elements<kChannelCount>(member(doc, "", "sphericalHarmonicsL2"),
-                                         "/sphericalHarmonicsL2", floats);
-  const Json& shader = member(doc, "", "shader");
-  for (const auto& [key, vector] : kShaderVectorKeys) {
-    const std::string pointer = std::string("/shader/") + key;
-    out.shader.*vector = elements<4>(member(shader, "/shader", key), pointer, float32);
-  }
+  const auto probes = doc.find("probes");
+  const bool bake = probes != doc.end() && probes->is_array();
+  if (bake && !probe)
+    throw BadValue{"/probes", "a bake document of " + std::to_string(probes->size()) +
+                                  " probes: choose one (preview --probe N)"};
+  if (!bake && probe) throw BadValue{"/", "not a bake document: it has no probes to choose from"};
+  if (bake && *probe >= probes->size())
+    throw BadValue{"/probes", "no probe " + std::to_string(*probe) + " (it has " + std::to_string(probes->size()) + ")"};
+  // The coefficients: the document's, or the chosen probe's (bake_json.h: the same keys).
+  const std::string at = bake ? "/probes/" + std::to_string(*probe) : "";
+  const Json& record = bake ? (*probes)[*probe] : doc;
+  read_coefficients(record, at, out);
   if (const auto options = doc.find("options"); options != doc.end() && options->is_object()) {
     if (options->contains("intensity")) out.intensity = number((*options)["intensity"], "/options/intensity");
     if (options->contains("rotate_deg")) out.rotate_deg = number((*options)["rotate_deg"], "/options/rotate_deg");
+  }
+  read_lights(doc, out.lights);
+  if (const auto source = doc.find("source"); source != doc.end() && source->is_object()) {
+    if (const auto digests = source->find("sha256"); digests != source->end() && digests->is_array())
+      for (const Json& d : *digests)
+        if (d.is_string()) out.sha256.push_back(d.get<std::string>());
   }
   return out;
 }
@@ -91,13 +133,13 @@ std::string parse_problem(const Json::parse_error& e) {
 
 }  // namespace
 
-IoStatus read_sh_json(const std::filesystem::path& path, ShJsonContent& out) {
+IoStatus read_sh_json(const std::filesystem::path& path, ShJsonContent& out, std::optional<std::size_t> probe) {
   try {
     // One checked read: a regular file (or this process's stdin pipe) of at most
     // kMaxDocumentBytes; devices, FIFOs and larger files are refused before reading.
     std::string text;
     if (IoStatus st = detail::read_text_file(path, detail::kMaxDocumentBytes, text); !st.ok()) return st;
-    out = content_of(Json::parse(text));
+    out = content_of(Json::parse(text), probe);
     return IoStatus::success();
   } catch (const Json::parse_error& e) {
     return IoStatus::error(IoErrc::Unreadable, path, "not valid JSON: " + parse_problem(e));

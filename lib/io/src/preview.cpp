@@ -29,10 +29,17 @@ double luminance(const std::array<double, 3>& rgb) {
   return kLuminance[0] * rgb[0] + kLuminance[1] * rgb[1] + kLuminance[2] * rgb[2];
 }
 
+// What Unity shows for normal n: ShadeSH9, plus each directional light's Lambert term
+// colour * intensity * max(0, n . -forward) (unity_light.h; view_error.h measures the same).
 std::array<double, 3> shade(const ShJsonContent& content, const Dir3& n) {
   const auto x = static_cast<float>(n.x), y = static_cast<float>(n.y), z = static_cast<float>(n.z);
-  return {shade_sh9(content.shader, 0, x, y, z), shade_sh9(content.shader, 1, x, y, z),
-          shade_sh9(content.shader, 2, x, y, z)};
+  std::array<double, 3> v = {shade_sh9(content.shader, 0, x, y, z), shade_sh9(content.shader, 1, x, y, z),
+                             shade_sh9(content.shader, 2, x, y, z)};
+  for (const UnitySunLight& l : content.lights) {
+    const double lambert = std::max(0.0, -(n.x * l.forward.x + n.y * l.forward.y + n.z * l.forward.z));
+    for (int c = 0; c < 3; ++c) v[c] += l.colour[c] * l.intensity * lambert;
+  }
+  return v;
 }
 
 // A tone-mapped pixel, or the negative mark if a channel is below 0.
@@ -44,6 +51,44 @@ Rgb8 display(const std::array<double, 3>& value, double exposure, std::uint32_t 
 
 void put(Rgb8Image& image, std::uint32_t x, std::uint32_t y, Rgb8 colour) {
   std::copy(colour.begin(), colour.end(), image.at(x, y));
+}
+
+// The pixel of an equirect panel that direction d falls in.
+void panel_pixel(const Dir3& d, std::uint32_t width, std::uint32_t height, std::uint32_t& x, std::uint32_t& y) {
+  const double u = 0.5 - std::atan2(d.z, d.x) / (2 * std::numbers::pi);
+  const double t = std::acos(std::clamp(d.y, -1.0, 1.0)) / std::numbers::pi;
+  x = std::min(width - 1, static_cast<std::uint32_t>(u * width));
+  y = std::min(height - 1, static_cast<std::uint32_t>(t * height));
+}
+
+// A small ring around each light's direction (towards it: -forward) on an equirect panel.
+void mark_lights(Rgb8Image& image, const PanelRect& panel, const ShJsonContent& content) {
+  for (const UnitySunLight& l : content.lights) {
+    std::uint32_t cx = 0, cy = 0;
+    panel_pixel({-l.forward.x, -l.forward.y, -l.forward.z}, panel.width, panel.height, cx, cy);
+    const int r = std::max(3, static_cast<int>(panel.height / 40));
+    for (int k = 0; k < 8 * r; ++k) {
+      const double a = 2 * std::numbers::pi * k / (8 * r);
+      const long px = std::lround(cx + r * std::cos(a)), py = std::lround(cy + r * std::sin(a));
+      if (px >= 0 && py >= 0 && px < panel.width && py < panel.height)
+        put(image, panel.x + static_cast<std::uint32_t>(px), panel.y + static_cast<std::uint32_t>(py), {0, 255, 255});
+    }
+  }
+}
+
+// The axes on an equirect panel (conventions.h): +X at the centre, +Z a quarter from the
+// left, -X at the edges, -Z three quarters; up at the top. A tick and its name below the panel.
+void mark_axes(Rgb8Image& image, const PanelRect& panel) {
+  const struct {
+    double u;
+    const char* name;
+  } axes[] = {{0.25, "+Z"}, {0.5, "+X"}, {0.75, "-Z"}};
+  for (const auto& a : axes) {
+    const auto x = panel.x + static_cast<std::uint32_t>(a.u * panel.width);
+    for (std::uint32_t y = 0; y < 4; ++y) put(image, x, panel.y + y, {255, 255, 255});
+    detail::draw_text(image, x + 2, panel.y + 2, a.name);
+  }
+  detail::draw_text(image, panel.x + 2, panel.y + 2, "UP");
 }
 
 // The direction of pixel (x, y) of a width x height equirect panel, and its solid angle.
@@ -120,7 +165,12 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
   }
 
   PreviewReport out;
-  out.mean_luminance = luminance({content.unity_sh[0][0], content.unity_sh[1][0], content.unity_sh[2][0]});
+  // The mean of what Unity shows over the sphere: the L00 terms, and a quarter of each light's
+  // colour * intensity (the mean of max(0, n . l) over the sphere is 1/4).
+  std::array<double, 3> mean = {content.unity_sh[0][0], content.unity_sh[1][0], content.unity_sh[2][0]};
+  for (const UnitySunLight& l : content.lights)
+    for (int c = 0; c < 3; ++c) mean[c] += 0.25 * l.colour[c] * l.intensity;
+  out.mean_luminance = luminance(mean);
   out.exposure = out.mean_luminance > 0 ? 1.0 / out.mean_luminance : 1.0;
 
   // Layout: titles above the panels; the legend (row 1) and the colour bar (row 2) below.
@@ -157,9 +207,11 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
     }
   }
   out.negative_fraction = negative_solid / (4.0 * std::numbers::pi);
+  mark_lights(image, out.sh, content);
+  mark_axes(image, out.sh);
   detail::draw_text(image, out.front.x, 2, "FRONT (FROM -Z)");
   detail::draw_text(image, out.top.x, 2, "TOP (FROM +Y)");
-  detail::draw_text(image, out.sh.x, 2, "SHADESH9 = E/PI, CENTRE +X");
+  detail::draw_text(image, out.sh.x, 2, content.lights.empty() ? "SHADESH9 = E/PI, CENTRE +X" : "SHADESH9 + LIGHTS (RINGS) = E/PI");
   detail::draw_text(image, 0, legend + 2,
                     "STRIPES: E/PI < 0 (" + number(100.0 * out.negative_fraction, false) +
                         "% OF SPHERE). REINHARD, MEAN E/PI " + number(out.mean_luminance, false) + " -> 0.5, SRGB");
@@ -188,11 +240,14 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
       }
     }
     out.rms_error = std::sqrt(sum_sq / (4.0 * std::numbers::pi));
+    mark_axes(image, out.reference);
     out.error_scale = out.max_abs_error;
     const double scale = out.error_scale > 0 ? out.error_scale : 1.0;
     for (std::uint32_t y = 0; y < ph; ++y)
       for (std::uint32_t x = 0; x < pw; ++x)
         put(image, out.error.x + x, out.error.y + y, detail::error_colour(error[std::size_t{y} * pw + x] / scale));
+    mark_lights(image, out.error, content);
+    mark_axes(image, out.error);
     const PanelRect& bar = out.colour_bar;
     for (std::uint32_t x = 0; x < bar.width; ++x) {
       const Rgb8 colour = detail::error_colour(-1.0 + 2.0 * x / (bar.width - 1));

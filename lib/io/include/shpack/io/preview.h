@@ -9,9 +9,13 @@
 //   "sh"     2S x S  E/pi over all directions, laid out as an equirect map (conventions.h:
 //                    centre column +X, a quarter from the left +Z, top row +Y)
 //
-// Every value is what Unity's shader returns, ShadeSH9(n) = SHEvalLinearL0L1 +
-// SHEvalLinearL2 evaluated in float from the document's shader vectors (unity_pack.h's
-// shade_sh9). Where any channel is negative (L2 ringing, which the built-in Standard shader
+// Every value is what Unity shows, ShadeSH9(n) = SHEvalLinearL0L1 + SHEvalLinearL2
+// evaluated in float from the document's shader vectors (unity_pack.h's shade_sh9), plus the
+// Lambert term colour * intensity * max(0, n . -forward) of every directional light the
+// document carries (its "sun" and "lights"), each marked by a cyan ring at its direction on
+// the E/pi and error panels. Ticks name +Z, +X and -Z along the equirect panels' top, up
+// being the top row. The mean the tone mapping and the percentages use is the mean of all of
+// it: the L00 terms plus a quarter of each light's colour * intensity. Where any channel is negative (L2 ringing, which the built-in Standard shader
 // clamps to 0), the pixel is marked with magenta diagonal stripes on black.
 //
 // With a reference map (the input the document came from, in any layout `convert` reads):
