@@ -12,9 +12,11 @@
 #include "report.h"
 #include "validators.h"
 #include "shpack/io/atomic_write.h"
+#include "shpack/io/image_file.h"
 #include "shpack/io/json_reader.h"
 #include "shpack/io/preview.h"
 #include "shpack/io/sha256.h"
+#include "shpack/io/stdin_spool.h"
 
 namespace shpack::cli {
 namespace {
@@ -40,7 +42,7 @@ CLI::App* add_preview_command(CLI::App& app, PreviewOptions& options) {
       ->type_name("FILE")
       ->required();
   cmd->add_option("--input", options.input,
-                  "The map the document came from: adds its exact E/pi and the error map")
+                  "The map the document came from (- for stdin): adds its exact E/pi and the error map")
       ->type_name("FILE");
   add_enum_option(*cmd, "--input-layout", options.input_layout,
                   {{"auto", Layout::Auto}, {"equirect", Layout::Equirect}, {"hcross", Layout::HorizontalCross},
@@ -72,6 +74,10 @@ int run_preview(const PreviewOptions& options) {
     report_usage_error("preview", problem);
     return kExitUsage;
   }
+  if (options.document == "-" && options.input == "-") {
+    report_usage_error("preview", "preview: the document and --input cannot both be stdin");
+    return kExitUsage;
+  }
   io::ShJsonContent content;
   if (io::IoStatus st = io::read_sh_json(options.document, content, options.probe); !st.ok()) {
     report_error(st.message);
@@ -82,15 +88,27 @@ int run_preview(const PreviewOptions& options) {
   settings.reference = options.input;
   settings.reference_layout = options.input_layout;
   settings.reference_label = std::filesystem::path(options.input).filename().string();
+  io::StdinSpool spool;  // --input -: the map on stdin (stdin_spool.h)
+  const bool from_stdin = options.input == "-";
+  if (from_stdin) {
+    if (io::IoStatus st = spool.fill(io::stdin_budget(io::kDefaultMaxTexels)); !st.ok()) {
+      report_error(st.message);
+      return kExitFailure;
+    }
+    settings.reference = spool.path();
+    settings.reference_label = io::kStdinName;
+  }
   io::Rgb8Image image;
   io::PreviewReport report;
   if (io::IoStatus st = io::render_preview(content, settings, image, report); !st.ok()) {
-    report_error(st.message);
+    const std::string path = settings.reference.string();
+    report_error(from_stdin && st.message.rfind(path, 0) == 0 ? std::string(io::kStdinName).append(st.message, path.size())
+                                                              : st.message);
     return kExitFailure;
   }
   if (!options.input.empty() && !content.sha256.empty()) {  // the reference should be the document's source
     std::string digest;
-    if (io::sha256_file(options.input, digest).ok() &&
+    if (io::sha256_file(settings.reference, digest).ok() &&
         std::find(content.sha256.begin(), content.sha256.end(), digest) == content.sha256.end())
       std::fprintf(stderr, "shpack: warning: %s is not the file the document was made from (its SHA-256 is not in "
                    "source.sha256); the error map compares different lighting\n", options.input.c_str());

@@ -73,4 +73,20 @@ TEST(StdinInput, BadStdinIsAOneLineErrorAndLeavesNothing) {
   EXPECT_EQ(run.exit_code, 2) << run.err;
 }
 
+TEST(StdinInput, PreviewTakesItsInputMapFromStdin) {
+  const ScratchDir dir;
+  const TempDirFor tmp(dir / "tmp");
+  const fs::path map = shpack_io_test::hdri("studio.exr");
+  ASSERT_EQ(run_shpack(dir, {"convert", map.string(), "-o", (dir / "s.json").string()}).exit_code, 0);
+  const CliRun piped = run_shpack(dir, {"preview", (dir / "s.json").string(), "-o", (dir / "a.png").string(), "--input", "-"}, map);
+  ASSERT_EQ(piped.exit_code, 0) << piped.err;
+  EXPECT_EQ(piped.err, "");  // its SHA-256 is the document's: no warning
+  const CliRun direct = run_shpack(dir, {"preview", (dir / "s.json").string(), "-o", (dir / "b.png").string(), "--input", map.string()});
+  ASSERT_EQ(direct.exit_code, 0) << direct.err;
+  EXPECT_EQ(piped.out, direct.out);
+  EXPECT_TRUE(fs::is_empty(dir / "tmp"));
+  const CliRun both = run_shpack(dir, {"preview", "-", "-o", (dir / "c.png").string(), "--input", "-"}, map);
+  EXPECT_EQ(both.exit_code, 2) << both.err;
+}
+
 }  // namespace
