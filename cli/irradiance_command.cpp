@@ -1,7 +1,10 @@
 #include "irradiance_command.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <string_view>
+#include <vector>
 
 #include "enum_option.h"
 #include "report.h"
@@ -46,8 +49,9 @@ CLI::App* add_irradiance_command(CLI::App& app, IrradianceOptions& options) {
   add_enum_option(*cmd, "--layout", options.layout,
                   {{"equirect", Layout::Equirect}, {"hcross", Layout::HorizontalCross},
                    {"vcross", Layout::VerticalCross}, {"hstrip", Layout::HorizontalStrip},
-                   {"vstrip", Layout::VerticalStrip}},
-                  "The output's layout (default equirect)");
+                   {"vstrip", Layout::VerticalStrip}, {"faces", Layout::Faces}},
+                  "The output's layout; faces: six files, -o a pattern with {face} (px nx py ny pz nz) "
+                  "(default equirect)");
   cmd->add_option("--size", options.size,
                   "Equirect: the height (the width is twice it); cubes: a face's side (default 128)")
       ->type_name("N")
@@ -71,11 +75,42 @@ CLI::App* add_irradiance_command(CLI::App& app, IrradianceOptions& options) {
   return cmd;
 }
 
+namespace {
+
+constexpr std::string_view kFacePlaceholder = "{face}";
+
+// One file, or for faces the six faces of the horizontal strip it was rendered as (+X -X
+// +Y -Y +Z -Z left to right, none turned: cube_layout.h), each to the pattern with {face}
+// replaced by px nx py ny pz nz. Each file is written whole or not at all (atomic_write.h).
+io::IoStatus write_image(const IrradianceOptions& options, const IrradianceImage& image) {
+  if (options.layout != Layout::Faces)
+    return io::write_exr_rgb(options.output, image.width, image.height, image.rgb);
+  const char* names[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+  const std::uint32_t n = image.height;
+  for (std::uint32_t f = 0; f < 6; ++f) {
+    std::vector<float> face(std::size_t{3} * n * n);
+    for (std::uint32_t y = 0; y < n; ++y)
+      std::copy_n(image.rgb.begin() + 3 * (std::size_t{y} * image.width + f * n), 3 * n, face.begin() + 3 * std::size_t{y} * n);
+    std::string path = options.output;
+    path.replace(path.find(kFacePlaceholder), kFacePlaceholder.size(), names[f]);
+    if (io::IoStatus st = io::write_exr_rgb(path, n, n, face); !st.ok()) return st;
+  }
+  return io::IoStatus::success();
+}
+
+}  // namespace
+
 int run_irradiance(const IrradianceOptions& options) {
+  if ((options.layout == Layout::Faces) != (options.output.find(kFacePlaceholder) != std::string::npos)) {
+    report_usage_error("irradiance", options.layout == Layout::Faces
+                                         ? "irradiance: --layout faces writes six files: give -o a pattern with {face}"
+                                         : "irradiance: {face} in -o needs --layout faces");
+    return kExitUsage;
+  }
   IrradianceRequest request;
   if (!parse_irradiance_source(options.source, request)) return kExitUsage;  // checked by CLI11
   request.seed = options.seed;
-  request.layout = options.layout;
+  request.layout = options.layout == Layout::Faces ? Layout::HorizontalStrip : options.layout;
   request.size = options.size;
   request.threads = options.threads;
 
@@ -113,7 +148,7 @@ int run_irradiance(const IrradianceOptions& options) {
     report_error(shown(std::string(path).append(": ").append(st.what)));
     return st.code == Errc::InvalidArgument ? kExitUsage : kExitFailure;
   }
-  if (io::IoStatus st = io::write_exr_rgb(options.output, image.width, image.height, image.rgb); !st.ok()) {
+  if (io::IoStatus st = write_image(options, image); !st.ok()) {
     report_error(st.message);
     return kExitFailure;
   }

@@ -67,6 +67,38 @@ TEST(IrradianceCli, WritesEOverPiInTheLayoutAsked) {
   }
 }
 
+TEST(IrradianceCli, FacesAreSixFilesOfThePattern) {
+  // Six N x N faces in Unity's order; each is the strip's cell (the same texel directions),
+  // so face +Y of a map brighter upwards is the brightest.
+  const ScratchDir dir;
+  std::vector<float> pixels;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 64; ++x) pixels.insert(pixels.end(), 3, y < 16 ? 2.0f : 0.5f);
+  ASSERT_TRUE(shpack_io_test::write_image(dir / "sky.exr", 64, 32, 3, pixels));
+  const std::string pattern = (dir / "e_{face}.exr").string();
+  CliRun run = run_shpack(dir, {"irradiance", (dir / "sky.exr").string(), "-o", pattern, "--layout", "faces",
+                                "--size", "4", "--source", "sh"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  run = run_shpack(dir, {"irradiance", (dir / "sky.exr").string(), "-o", (dir / "strip.exr").string(), "--layout",
+                         "hstrip", "--size", "4", "--source", "sh"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  shpack::io::ImageFile strip;
+  ASSERT_TRUE(shpack::io::read_image_file(dir / "strip.exr", strip).ok());
+  const char* names[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+  for (int f = 0; f < 6; ++f) {
+    shpack::io::ImageFile face;
+    ASSERT_TRUE(shpack::io::read_image_file(dir / ("e_" + std::string(names[f]) + ".exr"), face).ok()) << names[f];
+    ASSERT_EQ(face.width, 4u);
+    ASSERT_EQ(face.height, 4u);
+    for (std::uint32_t y = 0; y < 4; ++y)
+      for (std::uint32_t x = 0; x < 4; ++x)
+        for (int c = 0; c < 3; ++c)
+          EXPECT_EQ(face.pixels[(y * 4 + x) * 3 + c], strip.pixels[(y * 24 + f * 4 + x) * 3 + c]) << names[f];
+  }
+  run = run_shpack(dir, {"irradiance", (dir / "sky.exr").string(), "-o", (dir / "one.exr").string(), "--layout", "faces"});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+}
+
 TEST(IrradianceCli, BadRequestsAreOneLineErrors) {
   const ScratchDir dir;
   const fs::path map = uniform_map(dir, 64, 32, "uniform.exr");
