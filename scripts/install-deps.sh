@@ -20,6 +20,7 @@ packages=(
   libnewtonsoft-json-cil-dev     # tests/unity: Json.NET, which the package reads documents with
   clang libclang-rt-14-dev       # tests/fuzz: libFuzzer targets (clang++ -fsanitize=fuzzer)
   gnuplot-nox                    # shpack bench --plot
+  fonts-dejavu-core              # shpack preview's labels: DejaVu Sans, drawn through OpenImageIO's FreeType
   help2man                       # the man page that cmake --install installs, from shpack --help
   libfilament-tools              # tests/io: cmgen, against which --format filament is checked
   nodejs                         # tests/io: node runs three.js on --format threejs's output

@@ -353,4 +353,25 @@ TEST(Preview, ABakeDocumentsProbeAndAWrongInputAreSaid) {
   EXPECT_NE(run.err.find("is not the file the document was made from"), std::string::npos) << run.err;
 }
 
+// The labels: DejaVu Sans when Debian's font is installed (install-deps installs it), a
+// tenth of the spheres' size high, 11 pixels at least; the panels move down with them.
+TEST(Preview, TextIsATrueTypeFontThatScalesWithTheSize) {
+  ShJsonContent content;
+  content.unity_sh[0][0] = content.unity_sh[1][0] = content.unity_sh[2][0] = 0.5f;
+  content.shader.SHAr[3] = content.shader.SHAg[3] = content.shader.SHAb[3] = 0.5f;
+  PreviewSettings settings;
+  Rgb8Image image;
+  PreviewReport small, large;
+  settings.size = 64;
+  ASSERT_TRUE(render_preview(content, settings, image, small).ok());
+  settings.size = 512;
+  ASSERT_TRUE(render_preview(content, settings, image, large).ok());
+  const bool font = std::filesystem::is_regular_file("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
+  EXPECT_EQ(small.truetype_text, font);
+  if (font) {
+    EXPECT_EQ(small.front.y, 11u + 4u);  // the line, and its spacing
+    EXPECT_EQ(large.front.y, 512u / 10 + 4u);
+  }
+}
+
 }  // namespace shpack::io

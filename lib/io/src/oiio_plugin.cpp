@@ -36,7 +36,9 @@ bool load(const fs::path& file, OiioPlugin& plugin, std::string& why) {
   auto* abi = symbol<OiioAbiFn>(module, "shpack_oiio_abi");
   plugin.open = symbol<OiioOpenFn>(module, "shpack_oiio_open");
   plugin.encode_png = symbol<OiioEncodePngFn>(module, "shpack_oiio_encode_png");
-  if (abi == nullptr || plugin.open == nullptr || plugin.encode_png == nullptr || abi() != kOiioPluginAbi) {
+  plugin.render_text = symbol<OiioRenderTextFn>(module, "shpack_oiio_render_text");
+  if (abi == nullptr || plugin.open == nullptr || plugin.encode_png == nullptr || plugin.render_text == nullptr ||
+      abi() != kOiioPluginAbi) {
     ::dlclose(module);
     why = file.string() + " is from another build of shpack";
     return false;

@@ -17,6 +17,7 @@ namespace shpack::io::detail {
 struct OiioPlugin {
   OiioOpenFn* open = nullptr;
   OiioEncodePngFn* encode_png = nullptr;
+  OiioRenderTextFn* render_text = nullptr;
 };
 
 // The module's entry points, or null with the problem in `problem`: a clause to follow

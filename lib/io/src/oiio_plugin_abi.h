@@ -15,7 +15,7 @@
 
 namespace shpack::io::detail {
 
-inline constexpr int kOiioPluginAbi = 1;
+inline constexpr int kOiioPluginAbi = 2;
 inline constexpr const char* kOiioPluginFile = "libshpack_oiio.so";
 
 using OiioAbiFn = int();
@@ -25,6 +25,12 @@ using OiioOpenFn = ImageDecoder*(const char* path, std::string* error);
 using OiioEncodePngFn = bool(std::uint32_t width, std::uint32_t height, const std::uint8_t* rgb,
                              std::vector<unsigned char>* bytes, std::string* error);
 
+// One line of UTF-8 text drawn by FreeType (through OpenImageIO) with the TrueType font at
+// `font`, `size` pixels high: its coverage, 0..255 per pixel, `width` x `height` (= size)
+// row-major, the baseline at 4/5 of the height; or false with the reason in `error` (no such font, ...).
+using OiioRenderTextFn = bool(const char* utf8, const char* font, int size, std::vector<std::uint8_t>* coverage,
+                              std::uint32_t* width, std::uint32_t* height, std::string* error);
+
 }  // namespace shpack::io::detail
 
 extern "C" {
@@ -32,4 +38,6 @@ int shpack_oiio_abi();
 shpack::io::detail::ImageDecoder* shpack_oiio_open(const char* path, std::string* error);
 bool shpack_oiio_encode_png(std::uint32_t width, std::uint32_t height, const std::uint8_t* rgb,
                             std::vector<unsigned char>* bytes, std::string* error);
+bool shpack_oiio_render_text(const char* utf8, const char* font, int size, std::vector<std::uint8_t>* coverage,
+                             std::uint32_t* width, std::uint32_t* height, std::string* error);
 }

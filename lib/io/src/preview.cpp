@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "preview_draw.h"
+#include "preview_text.h"
 #include "shpack/conventions.h"
 #include "shpack/io/map_source.h"
 #include "shpack/layout.h"
@@ -23,7 +24,6 @@ using detail::Rgb8;
 // Unity's LinearRgbToLuminance (UnityCG.cginc): Rec. 709 primaries, D65 white.
 constexpr std::array<double, 3> kLuminance = {0.2126729, 0.7151522, 0.0721750};
 constexpr std::uint32_t kMargin = 4;       // between panels
-constexpr std::uint32_t kTitleHeight = 11; // a text line with its spacing
 
 double luminance(const std::array<double, 3>& rgb) {
   return kLuminance[0] * rgb[0] + kLuminance[1] * rgb[1] + kLuminance[2] * rgb[2];
@@ -78,7 +78,7 @@ void mark_lights(Rgb8Image& image, const PanelRect& panel, const ShJsonContent& 
 
 // The axes on an equirect panel (conventions.h): +X at the centre, +Z a quarter from the
 // left, -X at the edges, -Z three quarters; up at the top. A tick and its name below the panel.
-void mark_axes(Rgb8Image& image, const PanelRect& panel) {
+void mark_axes(Rgb8Image& image, const PanelRect& panel, const detail::TextPainter& text) {
   const struct {
     double u;
     const char* name;
@@ -86,9 +86,9 @@ void mark_axes(Rgb8Image& image, const PanelRect& panel) {
   for (const auto& a : axes) {
     const auto x = panel.x + static_cast<std::uint32_t>(a.u * panel.width);
     for (std::uint32_t y = 0; y < 4; ++y) put(image, x, panel.y + y, {255, 255, 255});
-    detail::draw_text(image, x + 2, panel.y + 2, a.name);
+    text.draw(image, x + 2, panel.y + 2, a.name);
   }
-  detail::draw_text(image, panel.x + 2, panel.y + 2, "UP");
+  text.draw(image, panel.x + 2, panel.y + 2, "up");
 }
 
 // The direction of pixel (x, y) of a width x height equirect panel, and its solid angle.
@@ -174,6 +174,10 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
   out.exposure = out.mean_luminance > 0 ? 1.0 / out.mean_luminance : 1.0;
 
   // Layout: titles above the panels; the legend (row 1) and the colour bar (row 2) below.
+  // Text that scales with the picture: a line a tenth of the spheres' size, 11 pixels at least.
+  const detail::TextPainter text(std::max<std::uint32_t>(11, s / 10));
+  const std::uint32_t kTitleHeight = text.line_height() + 4;  // a text line with its spacing
+  out.truetype_text = text.truetype();
   const std::uint32_t row1 = kTitleHeight, legend = row1 + s + 2;
   out.front = {0, row1, s, s};
   out.top = {s + kMargin, row1, s, s};
@@ -185,7 +189,7 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
     out.has_reference = true;
     out.reference = {0, row2, 2 * s, s};
     out.error = {2 * s + kMargin, row2, 2 * s, s};
-    out.colour_bar = {out.error.x, row2 + s + 3, 2 * s, 8};
+    out.colour_bar = {out.error.x, row2 + s + 3, 2 * s, std::max<std::uint32_t>(8, text.line_height())};
     height = out.colour_bar.y + out.colour_bar.height + 2 + kTitleHeight;
   }
   image.width = std::max(out.sh.x + out.sh.width, out.error.x + out.error.width);
@@ -208,13 +212,14 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
   }
   out.negative_fraction = negative_solid / (4.0 * std::numbers::pi);
   mark_lights(image, out.sh, content);
-  mark_axes(image, out.sh);
-  detail::draw_text(image, out.front.x, 2, "FRONT (FROM -Z)");
-  detail::draw_text(image, out.top.x, 2, "TOP (FROM +Y)");
-  detail::draw_text(image, out.sh.x, 2, content.lights.empty() ? "SHADESH9 = E/PI, CENTRE +X" : "SHADESH9 + LIGHTS (RINGS) = E/PI");
-  detail::draw_text(image, 0, legend + 2,
-                    "STRIPES: E/PI < 0 (" + number(100.0 * out.negative_fraction, false) +
-                        "% OF SPHERE). REINHARD, MEAN E/PI " + number(out.mean_luminance, false) + " -> 0.5, SRGB");
+  mark_axes(image, out.sh, text);
+  text.draw(image, out.front.x, 2, "front (from -Z)");
+  text.draw(image, out.top.x, 2, "top (from +Y)");
+  text.draw(image, out.sh.x, 2, content.lights.empty() ? "ShadeSH9 = E/\xCF\x80, centre +X" : "ShadeSH9 + lights (rings) = E/\xCF\x80");
+  std::string legend_text = "stripes: E/\xCF\x80 < 0 (";
+  legend_text.append(number(100.0 * out.negative_fraction, false)).append("% of the sphere). Reinhard, mean E/\xCF\x80 ");
+  legend_text.append(number(out.mean_luminance, false)).append(" -> 0.5, sRGB");
+  text.draw(image, 0, legend + 2, legend_text);
 
   if (reference) {
     const Matrix3 r = rotation_about_y(content.rotate_deg);
@@ -240,14 +245,14 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
       }
     }
     out.rms_error = std::sqrt(sum_sq / (4.0 * std::numbers::pi));
-    mark_axes(image, out.reference);
+    mark_axes(image, out.reference, text);
     out.error_scale = out.max_abs_error;
     const double scale = out.error_scale > 0 ? out.error_scale : 1.0;
     for (std::uint32_t y = 0; y < ph; ++y)
       for (std::uint32_t x = 0; x < pw; ++x)
         put(image, out.error.x + x, out.error.y + y, detail::error_colour(error[std::size_t{y} * pw + x] / scale));
     mark_lights(image, out.error, content);
-    mark_axes(image, out.error);
+    mark_axes(image, out.error, text);
     const PanelRect& bar = out.colour_bar;
     for (std::uint32_t x = 0; x < bar.width; ++x) {
       const Rgb8 colour = detail::error_colour(-1.0 + 2.0 * x / (bar.width - 1));
@@ -255,21 +260,20 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
     }
     const std::uint32_t labels = bar.y + bar.height + 2;
     const std::string low = number(-out.error_scale, true), high = number(out.error_scale, true);
-    detail::draw_text(image, bar.x, labels, low);
-    detail::draw_text(image, bar.x + (bar.width - detail::text_width("0")) / 2, labels, "0");
-    detail::draw_text(image, bar.x + bar.width - detail::text_width(high), labels, high);
+    text.draw(image, bar.x, labels, low);
+    text.draw(image, bar.x + (bar.width - text.width("0")) / 2, labels, "0");
+    text.draw(image, bar.x + bar.width - text.width(high), labels, high);
 
-    detail::draw_text(image, out.reference.x, row2 - kTitleHeight + 2, "REFERENCE: EXACT E/PI OF THE MAP");
-    detail::draw_text(image, out.error.x, row2 - kTitleHeight + 2, "ERROR: SH - REFERENCE, LUMINANCE");
+    text.draw(image, out.reference.x, row2 - kTitleHeight + 2, "reference: exact E/\xCF\x80 of the map");
+    text.draw(image, out.error.x, row2 - kTitleHeight + 2, "error: shown - reference, luminance");
     const double bound_percent =
         out.mean_luminance > 0 ? 100.0 * out.reference_bound_luminance / out.mean_luminance : 0.0;
     std::string label = settings.reference_label;  // clipped to its panel
-    const std::size_t fits = (out.reference.width + 1) / detail::kGlyphAdvance;
-    if (label.size() > fits) label = label.substr(0, fits - 3) + "...";
-    detail::draw_text(image, out.reference.x, bar.y, label);
-    std::string bound_text = "ERROR <= ";
-    bound_text.append(number(bound_percent, false)).append("% OF MEAN");
-    detail::draw_text(image, out.reference.x, labels, bound_text);
+    while (label.size() > 4 && text.width(label) > out.reference.width) label = label.substr(0, label.size() - 4).append("...");
+    text.draw(image, out.reference.x, bar.y, label);
+    std::string bound_text = "error <= ";
+    bound_text.append(number(bound_percent, false)).append("% of the mean");
+    text.draw(image, out.reference.x, labels, bound_text);
   }
   report = out;
   return IoStatus::success();

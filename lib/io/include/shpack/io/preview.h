@@ -37,9 +37,10 @@
 // shown at 0.5 before encoding. Luminance weights are Unity's LinearRgbToLuminance
 // (0.2126729, 0.7151522, 0.0721750; UnityCG.cginc).
 //
-// Labels are drawn with a built-in 5x7 bitmap font (upper case, digits, a few signs), so the
-// image does not depend on fonts installed on the machine (OpenImageIO's render_text needs
-// one, and finds none on a bare Debian 12).
+// Labels are drawn in DejaVu Sans (Debian's fonts-dejavu-core, which scripts/install-deps.sh
+// installs) through OpenImageIO's FreeType renderer, a tenth of the spheres' size high (11
+// pixels at least); without the font or the module, in a built-in 5x7 bitmap font (upper
+// case, digits, a few signs). PreviewReport::truetype_text says which.
 #pragma once
 
 #include <array>
@@ -87,6 +88,7 @@ struct PreviewReport {
   double error_scale = 0;              // the colour bar spans [-error_scale, +error_scale]
   double max_abs_error = 0;            // luminance of sh - reference, max over pixels
   double rms_error = 0;                // root mean square over the sphere (solid-angle weighted)
+  bool truetype_text = false;          // the labels are DejaVu Sans (else the bitmap font)
 };
 
 // Renders the panels for `content` (and settings.reference if set). Errors name the
