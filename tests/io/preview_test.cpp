@@ -322,6 +322,10 @@ TEST(Preview, ExtractedLightsAreWhatUnityShowsAndAreMarked) {
     for (std::uint32_t x = 0; x < with_sun.sh.width; ++x)
       if (pixel(image, with_sun.sh.x + x, with_sun.sh.y + y) == Rgb{0, 255, 255}) ++cyan;
   EXPECT_GT(cyan, 8u);
+  // The input as stored, a 2:1 map fitted into 2S x S: all of it.
+  EXPECT_EQ(with_sun.input.width, 2 * settings.size);
+  EXPECT_EQ(with_sun.input.height, settings.size);
+  EXPECT_EQ(with_sun.input.y + with_sun.input.height + 2, image.height);
 }
 
 TEST(Preview, ABakeDocumentsProbeAndAWrongInputAreSaid) {

@@ -123,7 +123,50 @@ std::string number(double v, bool sign) {
 // The input map as the document's truth: any layout convert reads, through the same source
 // (its colour matrix to Rec. 709 included), with NaN/Inf texels read as 0 as the view error
 // reads them (view_reference.h).
-IoStatus load_reference(const PreviewSettings& settings, ViewReference& reference, std::optional<Matrix3>& matrix) {
+// The input as it is stored (its own layout; six faces side by side, +X to -Z), fitted into
+// max_w x max_h by nearest texels: RGB floats, NaN/Inf as 0, grey as R = G = B.
+struct Thumbnail {
+  std::uint32_t width = 0, height = 0;
+  std::vector<std::array<double, 3>> rgb;
+};
+
+std::array<double, 3> texel_rgb(const ImageView& view, std::uint32_t x, std::uint32_t y) {
+  const auto* p = reinterpret_cast<const float*>(view.pixel(x, y));
+  std::array<double, 3> v{};
+  for (int c = 0; c < 3; ++c) {
+    const float f = p[view.channels >= 3 ? c : 0];
+    v[c] = std::isfinite(f) ? f : 0.0;
+  }
+  return v;
+}
+
+Thumbnail thumbnail_of(const MapImage& map, std::uint32_t max_w, std::uint32_t max_h) {
+  std::array<ImageView, kCubeFaceCount> faces = map.faces;
+  const bool six = map.layout == Layout::Faces;
+  ImageView one = map.image;
+  if (six) {
+    for (ImageView& f : faces) (void)resolve_view(f);
+  } else {
+    (void)resolve_view(one);
+  }
+  const std::uint32_t n = six ? faces[0].width : 0;
+  const std::uint32_t w = six ? 6 * n : one.width, h = six ? n : one.height;
+  const double scale = std::min(static_cast<double>(max_w) / w, static_cast<double>(max_h) / h);
+  Thumbnail t;
+  t.width = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(w * scale));
+  t.height = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(h * scale));
+  t.rgb.resize(std::size_t{t.width} * t.height);
+  for (std::uint32_t y = 0; y < t.height; ++y)
+    for (std::uint32_t x = 0; x < t.width; ++x) {
+      const std::uint32_t sx = std::min(w - 1, static_cast<std::uint32_t>((x + 0.5) / scale));
+      const std::uint32_t sy = std::min(h - 1, static_cast<std::uint32_t>((y + 0.5) / scale));
+      t.rgb[std::size_t{y} * t.width + x] = six ? texel_rgb(faces[sx / n], sx % n, sy) : texel_rgb(one, sx, sy);
+    }
+  return t;
+}
+
+IoStatus load_reference(const PreviewSettings& settings, ViewReference& reference, std::optional<Matrix3>& matrix,
+                        Thumbnail& thumbnail) {
   MapSource source;
   SourceOptions options;
   options.layout = settings.reference_layout;
@@ -134,6 +177,7 @@ IoStatus load_reference(const PreviewSettings& settings, ViewReference& referenc
   if (Status st = build_view_reference(map, project, reference); !st.ok())
     return IoStatus::error(IoErrc::Core, settings.reference, st.what);
   matrix = source.info().colour.matrix;
+  thumbnail = thumbnail_of(map, 2 * settings.size, settings.size);
   return IoStatus::success();
 }
 
@@ -160,8 +204,9 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
   }
   std::optional<ViewReference> reference;
   std::optional<Matrix3> matrix;
+  Thumbnail input;
   if (!settings.reference.empty()) {
-    if (IoStatus st = load_reference(settings, reference.emplace(), matrix); !st.ok()) return st;
+    if (IoStatus st = load_reference(settings, reference.emplace(), matrix, input); !st.ok()) return st;
   }
 
   PreviewReport out;
@@ -191,6 +236,8 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
     out.error = {2 * s + kMargin, row2, 2 * s, s};
     out.colour_bar = {out.error.x, row2 + s + 3, 2 * s, std::max<std::uint32_t>(8, text.line_height())};
     height = out.colour_bar.y + out.colour_bar.height + 2 + kTitleHeight;
+    out.input = {0, height + kTitleHeight, input.width, input.height};  // row 3: the map itself
+    height = out.input.y + out.input.height + 2;
   }
   image.width = std::max(out.sh.x + out.sh.width, out.error.x + out.error.width);
   image.height = height;
@@ -274,6 +321,15 @@ IoStatus render_preview(const ShJsonContent& content, const PreviewSettings& set
     std::string bound_text = "error <= ";
     bound_text.append(number(bound_percent, false)).append("% of the mean");
     text.draw(image, out.reference.x, labels, bound_text);
+    // The input as stored, with the document's colour matrix and intensity, the same tone mapping.
+    for (std::uint32_t y = 0; y < input.height; ++y)
+      for (std::uint32_t x = 0; x < input.width; ++x) {
+        const std::array<double, 3> v =
+            to_output(matrix, content.intensity, input.rgb[std::size_t{y} * input.width + x], false);
+        const std::array<double, 3> shown = {std::max(0.0, v[0]), std::max(0.0, v[1]), std::max(0.0, v[2])};
+        put(image, out.input.x + x, out.input.y + y, display(shown, out.exposure, out.input.x + x, out.input.y + y));
+      }
+    text.draw(image, out.input.x, out.input.y - kTitleHeight + 2, "input: the map as stored (radiance)");
   }
   report = out;
   return IoStatus::success();

@@ -25,6 +25,9 @@
 //                        as convert applies it) with the document's intensity and rotation
 //   "error"      2S x S  luminance of sh - reference, blue (sh too dark) - white - red (too
 //                        bright), with a colour bar labelled with its end values
+//   "input"      <= 2S x S  the map itself as stored (its own layout; six faces side by
+//                        side), nearest texels, radiance with the same colour matrix,
+//                        intensity and tone mapping
 //
 // The reference is the view error's (view_reference.h): exact where a cell of texels lies
 // wholly on one side of the normal's horizon, within a stated bound where the horizon cuts
@@ -83,6 +86,7 @@ struct PreviewReport {
   PanelRect front, top, sh;            // the panels
   bool has_reference = false;          // the fields below are set only with a reference
   PanelRect reference, error, colour_bar;
+  PanelRect input;                     // the input map as stored, fitted into 2S x S
   std::array<double, 3> reference_bound{};  // per channel: max over pixels of the bound, E/pi units
   double reference_bound_luminance = 0;     // max over pixels of the luminance of the bound
   double error_scale = 0;              // the colour bar spans [-error_scale, +error_scale]
