@@ -84,7 +84,7 @@ void warn_capped_probes(const scene::Scene& scene, const bake::BakeResult& resul
 
 CLI::App* add_bake_command(CLI::App& app, BakeCommandOptions& options) {
   CLI::App* cmd = app.add_subcommand("bake", "Bake a scene (lights, environment, effects) into one SH per probe");
-  cmd->add_option("scene", options.scene, "The scene file (docs/scenes.md)")->type_name("FILE")->required();
+  cmd->add_option("scene", options.scene, "The scene file (docs/scenes.md); - for stdin, its files then relative to the current folder")->type_name("FILE")->required();
   cmd->add_option("-o,--output", options.output, "Output JSON file; - for stdout (default: stdout)")->type_name("FILE");
   add_enum_option(*cmd, "--format", options.format,
                   {{"full", bake::BakeFormat::Full}, {"unity-probes", bake::BakeFormat::UnityProbes}},
@@ -106,11 +106,6 @@ CLI::App* add_bake_command(CLI::App& app, BakeCommandOptions& options) {
 }
 
 int run_bake(const BakeCommandOptions& options) {
-  if (options.scene == "-") {  // the files a scene names are relative to its folder
-    report_usage_error("bake",
-                       "bake: the scene is read from a file, not stdin: its map and meshes are named relative to it");
-    return kExitUsage;
-  }
   bake::BakeJsonOptions json_options;
   json_options.format = options.format;
   if (!parse_window(options.window, json_options.window).ok()) return kExitUsage;  // checked by CLI11

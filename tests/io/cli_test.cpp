@@ -74,10 +74,21 @@ TEST(Cli, DashReadsTheDocumentFromStdin) {
   const CliRun bad = shpack(dir, {"eval", "-", "--dir", "0,1,0"}, dir / "bad.json");
   EXPECT_EQ(bad.exit_code, 1);
   EXPECT_EQ(bad.err.rfind("shpack: stdin: not valid JSON", 0), 0u) << bad.err;
-  // A scene names its files relative to its own folder, which stdin does not have.
+  // A scene on stdin, named so; the files it names relative to the current folder (here
+  // absolute). Its bake is the same file's, but for the name.
   const CliRun bake = shpack(dir, {"bake", "-"}, dir / "s.json");
-  EXPECT_EQ(bake.exit_code, 2);
-  EXPECT_NE(bake.err.find("not stdin"), std::string::npos) << bake.err;
+  EXPECT_EQ(bake.exit_code, 1);
+  EXPECT_EQ(bake.err.rfind("shpack: stdin: ", 0), 0u) << bake.err;
+  std::ofstream(dir / "scene.json") << R"({"probes": [[0, 1, 0]], "environment": {"type": "map", "path": ")"
+                                     << hdri("sunset.exr").string() << R"("}, "effects": ["environment"]})";
+  const CliRun piped = shpack(dir, {"bake", "-"}, dir / "scene.json");
+  ASSERT_EQ(piped.exit_code, 0) << piped.err;
+  const CliRun named = shpack(dir, {"bake", (dir / "scene.json").string()});
+  ASSERT_EQ(named.exit_code, 0) << named.err;
+  const nlohmann::json a = nlohmann::json::parse(piped.out), b = nlohmann::json::parse(named.out);
+  EXPECT_EQ(a["scene"]["file"], "stdin");
+  EXPECT_EQ(a["scene"]["sha256"], b["scene"]["sha256"]);
+  EXPECT_EQ(a["probes"], b["probes"]);  // (the effects' timings differ from run to run)
 }
 
 TEST(Cli, ConvertWithoutOutputPrintsTheJson) {

@@ -525,11 +525,17 @@ std::string probe_label(const Scene& scene, std::size_t k) {
 
 const char* scene_schema_text() noexcept { return detail::kSceneSchemaText; }
 
-IoStatus load_scene(const fs::path& path, Scene& out) {
+IoStatus load_scene(const fs::path& file, Scene& out) {
+  // "-": the scene on stdin, named so, the files it names relative to the current folder.
+  const bool from_stdin = file == "-";
+  const fs::path path = from_stdin ? fs::path("stdin") : file;
   try {
     std::string text;
-    if (IoStatus st = detail::read_bounded(path, detail::FileKind::Stream, detail::kMaxSceneBytes, text); !st.ok())
-      return st;
+    if (IoStatus st = detail::read_bounded(from_stdin ? fs::path("/dev/stdin") : file, detail::FileKind::Stream,
+                                           detail::kMaxSceneBytes, text);
+        !st.ok())
+      return from_stdin ? IoStatus{st.code, std::string("stdin").append(st.message, std::string("/dev/stdin").size())}
+                        : st;
     if (nested_deeper_than(text, kMaxNesting))
       return IoStatus::error(IoErrc::BadDocument, path, "nested deeper than " + std::to_string(kMaxNesting) + " levels");
     Json doc;

@@ -9,7 +9,8 @@
 // Every error is one line naming the scene file and the JSON path of the offending value,
 // "scene.json: lights[2].radius: must be > 0"; a referenced file's problem names that file as
 // well, "scene.json: geometry[0].path: chair.obj: no such file". On failure `out` is left
-// untouched.
+// untouched. `path` "-" reads the scene from stdin (named "stdin"), the files it names then
+// relative to the current folder.
 #pragma once
 
 #include <filesystem>
