@@ -117,7 +117,7 @@ int run_view_error_bench(const std::vector<std::string>& inputs, const BenchOpti
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& options) {
   CLI::App* cmd = app.add_subcommand("bench", "Accuracy against time of every projection method");
   cmd->add_option("inputs", options.inputs,
-                  "Equirect maps, or synthetic:band-limited|texel|sun|gradient, or scenes (SCENE.json: each "
+                  "Equirect maps (- for one on stdin), or synthetic:band-limited|texel|sun|gradient, or scenes (SCENE.json: each "
                   "Monte Carlo effect of `shpack bake` against a reference of the scene) "
                   "(default: $SHPACK_DATA_DIR/*.exr, else the installed <prefix>/share/shpack/hdri/*.exr; "
                   "then the synthetic maps)")

@@ -89,4 +89,16 @@ TEST(StdinInput, PreviewTakesItsInputMapFromStdin) {
   EXPECT_EQ(both.exit_code, 2) << both.err;
 }
 
+TEST(StdinInput, BenchMeasuresAMapOnStdin) {
+  const ScratchDir dir;
+  const TempDirFor tmp(dir / "tmp");
+  const CliRun run = run_shpack(dir, {"bench", "-", "--methods", "center", "--quick", "--repeats", "1", "--json"},
+                                shpack_io_test::hdri("studio.exr"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json records = nlohmann::json::parse(run.out);
+  ASSERT_EQ(records.size(), 1u);
+  EXPECT_EQ(records[0]["input"], "stdin");
+  EXPECT_TRUE(fs::is_empty(dir / "tmp"));
+}
+
 }  // namespace

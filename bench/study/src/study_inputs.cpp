@@ -10,6 +10,7 @@
 
 #include "shpack/conventions.h"
 #include "shpack/io/image_file.h"
+#include "shpack/io/stdin_spool.h"
 #include "shpack/layout.h"
 
 namespace shpack::study {
@@ -147,13 +148,20 @@ io::IoStatus load_study_input(const std::string& input, StudyImage& out) {
                                "no such synthetic map (band-limited, texel, sun, gradient)");
   }
   io::ImageFile file;
-  if (io::IoStatus st = io::read_image_file(input, file); !st.ok()) return st;
+  io::StdinSpool spool;  // "-": the map on stdin (stdin_spool.h), named stdin
+  if (input == "-") {
+    if (io::IoStatus st = spool.fill(io::stdin_budget(io::kDefaultMaxTexels)); !st.ok()) return st;
+    if (io::IoStatus st = io::read_image_file(spool.path(), file); !st.ok())
+      return {st.code, std::string(io::kStdinName).append(st.message, spool.path().string().size())};
+  } else if (io::IoStatus st = io::read_image_file(input, file); !st.ok()) {
+    return st;
+  }
   if (shpack::resolve_layout(shpack::Layout::Auto, file.width, file.height) != shpack::Layout::Equirect) {
     return io::IoStatus::error(io::IoErrc::UnknownLayout, input,
                                "a " + std::to_string(file.width) + "x" + std::to_string(file.height) +
                                    " image is not an equirect map (2:1); bench reads those only");
   }
-  out = {input, file.width, file.height, file.channels, std::move(file.pixels)};
+  out = {input == "-" ? std::string(io::kStdinName) : input, file.width, file.height, file.channels, std::move(file.pixels)};
   return io::IoStatus::success();
 }
 

@@ -54,7 +54,7 @@ std::filesystem::path find_bundled_maps(const char* data_dir, const std::filesys
 std::vector<std::string> default_inputs(const std::filesystem::path& bundled_dir);
 
 // Reads `input`: a synthetic name, or an image file (image_file.h) whose shape says it is
-// equirect (2:1, or 1x1). Errors name the input: InvalidArgument for an unknown synthetic
+// equirect (2:1, or 1x1); "-" is one on stdin. Errors name the input: InvalidArgument for an unknown synthetic
 // name, UnknownLayout for another shape, and those of read_image_file.
 io::IoStatus load_study_input(const std::string& input, StudyImage& out);
 
