@@ -2,9 +2,8 @@
 // FreeType through the OpenImageIO module (oiio_plugin_abi.h), at a size that follows the
 // picture's, when the module and the font (Debian's fonts-dejavu-core) are there; else the
 // built-in 5x7 bitmap font (preview_draw.h), which has upper case only: its text is shown
-// upper-cased, with π written PI. Labels are written with π; DejaVu Sans has the glyph, but
-// OpenImageIO 2.4's render_text misdecodes multi-byte UTF-8, so it is drawn as "pi" there too
-// (preview_text.cpp).
+// upper-cased, with π written PI. OpenImageIO 2.4's render_text misdecodes multi-byte UTF-8,
+// so it is handed ASCII only and π is drawn here (preview_text.cpp).
 #pragma once
 
 #include <cstdint>
