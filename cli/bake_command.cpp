@@ -84,7 +84,10 @@ void warn_capped_probes(const scene::Scene& scene, const bake::BakeResult& resul
 
 CLI::App* add_bake_command(CLI::App& app, BakeCommandOptions& options) {
   CLI::App* cmd = app.add_subcommand("bake", "Bake a scene (lights, environment, effects) into one SH per probe");
-  cmd->add_option("scene", options.scene, "The scene file (docs/scenes.md); - for stdin, its files then relative to the current folder")->type_name("FILE")->required();
+  cmd->add_option("scene", options.scene,
+                  "The scene file (docs/scenes.md); - for stdin, its files then relative to the current folder")
+      ->type_name("FILE")
+      ->required();
   cmd->add_option("-o,--output", options.output, "Output JSON file; - for stdout (default: stdout)")->type_name("FILE");
   add_enum_option(*cmd, "--format", options.format,
                   {{"full", bake::BakeFormat::Full}, {"unity-probes", bake::BakeFormat::UnityProbes}},

@@ -175,7 +175,8 @@ std::string resolve_format(const ConvertOptions& options, io::OutputFormat& form
 CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
   CLI::App* cmd = app.add_subcommand("convert", "Environment maps to Unity L2 SH (JSON)");
   CLI::Option* inputs =
-      cmd->add_option("inputs", options.inputs, "Environment map files (EXR, HDR, PFM, PNG, ...); - for one on stdin")->type_name("FILE");
+      cmd->add_option("inputs", options.inputs, "Environment map files (EXR, HDR, PFM, PNG, ...); - for one on stdin")
+          ->type_name("FILE");
   // 1 to 6 values for CLI11; plan_outputs refuses any count but six files or one pattern.
   cmd->add_option("--faces", options.faces,
                   "Six cube face files in Unity's order: +X -X +Y -Y +Z -Z (instead of inputs); "

@@ -8,6 +8,7 @@
 
 #include "enum_option.h"
 #include "report.h"
+#include "shpack/option_choices.h"
 #include "shpack/io/exr_writer.h"
 #include "shpack/io/map_source.h"
 #include "shpack/io/stdin_spool.h"
@@ -36,15 +37,13 @@ bool parse_irradiance_source(const std::string& text, IrradianceRequest& request
 
 CLI::App* add_irradiance_command(CLI::App& app, IrradianceOptions& options) {
   CLI::App* cmd = app.add_subcommand("irradiance", "Write E/pi of a map as an image: what L2 keeps and loses");
-  cmd->add_option("input", options.input, "The environment map (any format convert reads); - for one on stdin")->type_name("FILE")->required();
+  cmd->add_option("input", options.input, "The environment map (any format convert reads); - for one on stdin")
+      ->type_name("FILE")
+      ->required();
   cmd->add_option("-o,--output", options.output, "The OpenEXR file to write (float RGB); - for stdout")
       ->type_name("FILE")
       ->required();
-  add_enum_option(*cmd, "--input-layout", options.input_layout,
-                  {{"auto", Layout::Auto}, {"equirect", Layout::Equirect}, {"hcross", Layout::HorizontalCross},
-                   {"vcross", Layout::VerticalCross}, {"hstrip", Layout::HorizontalStrip},
-                   {"vstrip", Layout::VerticalStrip}, {"octahedral", Layout::Octahedral},
-                   {"angular", Layout::Angular}, {"mirrorball", Layout::MirrorBall}},
+  add_enum_option(*cmd, "--input-layout", options.input_layout, kLayoutChoices,
                   "How the input holds the sphere, as convert's --layout (default auto)");
   add_enum_option(*cmd, "--layout", options.layout,
                   {{"equirect", Layout::Equirect}, {"hcross", Layout::HorizontalCross},

@@ -10,6 +10,7 @@
 #include "enum_option.h"
 #include "output_check.h"
 #include "report.h"
+#include "shpack/option_choices.h"
 #include "validators.h"
 #include "shpack/io/atomic_write.h"
 #include "shpack/io/image_file.h"
@@ -44,11 +45,7 @@ CLI::App* add_preview_command(CLI::App& app, PreviewOptions& options) {
   cmd->add_option("--input", options.input,
                   "The map the document came from (- for stdin): adds its exact E/pi and the error map")
       ->type_name("FILE");
-  add_enum_option(*cmd, "--input-layout", options.input_layout,
-                  {{"auto", Layout::Auto}, {"equirect", Layout::Equirect}, {"hcross", Layout::HorizontalCross},
-                   {"vcross", Layout::VerticalCross}, {"hstrip", Layout::HorizontalStrip},
-                   {"vstrip", Layout::VerticalStrip}, {"octahedral", Layout::Octahedral},
-                   {"angular", Layout::Angular}, {"mirrorball", Layout::MirrorBall}},
+  add_enum_option(*cmd, "--input-layout", options.input_layout, kLayoutChoices,
                   "How --input holds the sphere, as convert's --layout (default auto)");
   cmd->add_option_function<std::size_t>(
          "--probe", [&options](std::size_t n) { options.probe = n; },
