@@ -1,7 +1,8 @@
 // The greedy choice among light candidates (light_choice.h), with error measures made by hand:
 // a table of the error of each set of candidates. It picks the candidate that lowers the error
 // most at each step, never one that does not lower it, stops at max_lights, breaks ties by the
-// lower index, calls the measure 1 + sum_s (K - s) times, and gives the same choice twice.
+// lower index, calls the measure 1 + sum_s (K - s) times, and gives the same choice twice;
+// a settling step after each choice lowers its error and may never raise it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -98,6 +99,35 @@ TEST(LightChoice, BreaksTiesByTheLowerIndexAndChoosesTheSameTwice) {
   EXPECT_EQ(first.lights[1].candidate, 0u);  // 0 and 2 both give 3
   ASSERT_TRUE(choose_lights(std::vector<LightCandidate>(3), 3, measure, second).ok());
   EXPECT_EQ(second, first);
+}
+
+TEST(LightChoice, SettlingLowersEachStepsErrorAndIsCalledOncePerStep) {
+  // The settling step lowers the chosen set's error by 1 (a measure that then sees the
+  // settled lights would give that): each step's error_after is the settled one, and the
+  // next step starts from it.
+  TableMeasure measure = four_candidates();
+  std::vector<std::vector<std::size_t>> settled;
+  auto settle = [&](std::span<const std::size_t> chosen, double& error) {
+    settled.emplace_back(chosen.begin(), chosen.end());
+    error -= 1;
+    return Status::success();
+  };
+  LightChoice choice;
+  ASSERT_TRUE(choose_lights(kFour, 8, measure, choice, settle).ok());
+  ASSERT_EQ(choice.lights.size(), 2u);
+  EXPECT_EQ(choice.lights[0], (ChosenLight{1, 20, 11}));
+  EXPECT_EQ(choice.lights[1], (ChosenLight{2, 11, 7}));
+  EXPECT_EQ(settled, (std::vector<std::vector<std::size_t>>{{1}, {1, 2}}));
+}
+
+TEST(LightChoice, RefusesASettlingThatRaisesTheError) {
+  TableMeasure measure = four_candidates();
+  auto raising = [](std::span<const std::size_t>, double& error) {
+    error += 1;
+    return Status::success();
+  };
+  LightChoice choice;
+  EXPECT_EQ(choose_lights(kFour, 8, measure, choice, raising).code, Errc::InvalidArgument);
 }
 
 TEST(LightChoice, PassesOnTheMeasuresFailureAndRefusesANonFiniteError) {

@@ -11,6 +11,7 @@
 
 #include "cli_runner.h"
 #include "io_test_files.h"
+#include "shpack/light_fit.h"
 
 namespace shpack::io {
 namespace {
@@ -52,7 +53,10 @@ TEST(LightExtractionCli, CommandWritesTheChosenLightsOrAnEmptyArray) {
     EXPECT_EQ(light["unity_view_error_before_pct"].get<double>(), before);  // each starts where the last ended
     EXPECT_LT(light["unity_view_error_after_pct"].get<double>(), before);
     before = light["unity_view_error_after_pct"].get<double>();
+    // The light within its reach of its source's centre (light_fit.h).
+    EXPECT_LE(light["offset_deg"].get<double>(), light_reach_deg(light["angular_radius_deg"].get<double>()) + 1e-9);
   }
+  EXPECT_EQ(before, j["diagnostics"]["unity_view_error_max_pct"].get<double>());  // the last light's is the result's
   EXPECT_FALSE(j.contains("sun"));
 
   run = shpack_io_test::run_shpack(dir, {"convert", sunset, "--extract-lights", "0"});

@@ -2,7 +2,8 @@
 // taken out of the map as a Unity directional light (unity_light.h): a sun, a lamp, a
 // softbox, a window. They are found once, with everything a choice among them needs (the
 // light, and the SH of what taking it out removes), so that the choice (light_choice.h) never
-// reads the map again; remove_light_candidates then takes the chosen ones out of the pixels.
+// reads the map again; remove_light_candidates takes chosen ones out of the pixels, for a caller
+// that wants the map without them (the pipeline fits the lights instead, light_fit.h).
 // The single brightest source of `--extract-sun` is light_extraction.h's.
 //
 // Finding them, with the luminance Y = w . rgb and the value policies of light_extraction.h

@@ -24,6 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <type_traits>
 #include <vector>
@@ -68,10 +69,13 @@ struct LightChoice {
   friend bool operator==(const LightChoice&, const LightChoice&) = default;
 };
 
-// Chooses up to max_lights of `candidates` as above into `choice`.
+// Chooses up to max_lights of `candidates` as above into `choice`. With `settle`, each step
+// ends with settle(chosen, error): the caller may change how it shows the lights chosen so far
+// (the pipeline moves their directions, light_fit.h) and lower `error` (never raise it); the
+// step's error_after is the settled error, and error_of sees the settled lights from then on.
 // Errors: what error_of returns (the choice so far is kept), InvalidArgument when it gives an
 // error that is not finite, OutOfMemory.
 Status choose_lights(std::span<const LightCandidate> candidates, std::size_t max_lights, LightErrorMeasure error_of,
-                     LightChoice& choice) noexcept;
+                     LightChoice& choice, std::optional<LightErrorMeasure> settle = std::nullopt) noexcept;
 
 }  // namespace shpack

@@ -63,6 +63,7 @@ struct SunLight {
   double radius_deg = 0;               // angular radius of the removed disc
   double solid_angle = 0;              // of the removed texels, sr
   std::uint64_t texels = 0;            // how many were removed
+  double offset_deg = 0;               // --extract-lights: the angle from its source's centre (light_fit.h)
 
   friend bool operator==(const SunLight&, const SunLight&) = default;
 };

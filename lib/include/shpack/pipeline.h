@@ -5,8 +5,9 @@
 //   1. source      which pixels: file or faces, part/layer, data window, colour space and
 //                  layout, resolved once (lib/io's map source for files; the caller's views
 //                  here). Result: a MapImage and FinishOptions::colour_matrix.
-//   2. transforms  --extract-sun, --extract-lights N: image in, image + lights out
-//                  (light_extraction.h; light_candidates.h and light_choice.h, the choice
+//   2. transforms  --extract-sun: image in, image + light out (light_extraction.h);
+//                  --extract-lights N: image in, lights + the SH they take out of the
+//                  projection (light_candidates.h, light_choice.h and light_fit.h, the choice
 //                  measured by stage 4 and view_error.h). Needs the whole image, writable.
 //   3. projector   one, chosen by ConvertOptions::method: the closed-form rules of every
 //                  layout (project.h, project_cube.h, project_sphere_map.h) or the sampling
@@ -128,7 +129,10 @@ struct ConvertOptions {
 // What stage 2 took out of the map, in the map's frame and colours (unfinished).
 struct Extraction {
   std::optional<SunLight> sun;     // --extract-sun found one
-  std::vector<SunLight> lights;    // --extract-lights: the lights chosen, in the order chosen
+  std::vector<SunLight> lights;    // --extract-lights: the lights chosen, in the order chosen,
+                                   // their irradiance fitted (light_fit.h)
+  ShL2 removed;                    // --extract-lights: the radiance SH the lights take out of
+                                   // the projection (their texels are left as they are)
   LightChoice choice;              // and how each lowered the error (light_choice.h)
   std::size_t candidates = 0;      // how many candidates were found (light_candidates.h)
 };
@@ -177,13 +181,15 @@ Status apply_nonfinite_policy(const ProjectStats& stats, NonFinite policy) noexc
 Status convert_map(const MapImage& map, const ConvertOptions& options, Conversion& out,
                    ProjectStats* seen = nullptr) noexcept;
 
-// Stage 2 on a whole equirect map: the sun or the lights the options ask for are found and
-// their texels set to their fill levels in map.writable. The lights of extract_lights are
-// chosen by choose_lights (light_choice.h) among the candidates of a search at each of
-// kLightChoiceScales (up to kLightCandidateCount each, light_candidates.h), the
-// measure being the max error (view_error.h, against `reference`, the input before any
-// transform) of stage 4 on the exact projection of the map less the candidates' removed SH,
-// with their finished lights. Nothing is written when it fails.
+// Stage 2 on a whole equirect map. extract_sun: the sun is found and its texels set to their
+// fill level in map.writable. extract_lights: the lights are chosen by choose_lights
+// (light_choice.h) among the candidates of a search at each of kLightChoiceScales (up to
+// kLightCandidateCount each, light_candidates.h), each set of lights tried with its colours
+// fitted (light_fit.h), the measure being the max error (view_error.h, against `reference`,
+// the input before any transform) of stage 4 on the exact projection of the map less the
+// lights' SH, with their finished lights; the map is left as it is and
+// Extraction::removed holds the SH to take out of its projection. Nothing is written when it
+// fails.
 Status extract_from_map(const MapImage& map, const ConvertOptions& options, const ViewSamples& reference,
                         Extraction& out) noexcept;
 

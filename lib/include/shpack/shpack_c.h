@@ -161,8 +161,9 @@ typedef struct shpack_convert_options {
 /* A light taken out of the map, in the output's frame and colours (the JSON's "sun"). */
 typedef struct shpack_light {
   double direction[3];  /* unit, towards the light, Unity's frame, rotation applied */
-  double irradiance[3]; /* E per channel at normal incidence, intensity applied */
-  double sky_level[3];  /* the radiance its texels were given */
+  double irradiance[3]; /* E per channel at normal incidence, intensity applied (fitted for extract_lights) */
+  double sky_level[3];  /* the radiance its texels were given (extract_lights: the level around
+                           its source, whose texels are left as they are) */
   double angular_radius_deg, solid_angle_sr;
   uint64_t texels;      /* how many texels were replaced */
   /* As a Unity directional light (unity_light in the JSON): */

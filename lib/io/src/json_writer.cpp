@@ -96,6 +96,7 @@ std::string to_json(const ShDocument& doc) {
     Json lights = Json::array();
     for (const ExtractedLight& light : doc.lights) {
       Json record = sun_json(light.light);
+      record["offset_deg"] = light.light.light.offset_deg;
       record["unity_view_error_before_pct"] = light.error_before_pct;
       record["unity_view_error_after_pct"] = light.error_after_pct;
       lights.push_back(std::move(record));

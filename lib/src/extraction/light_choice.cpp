@@ -18,7 +18,7 @@ Status measure(const LightErrorMeasure& error_of, std::span<const std::size_t> c
 
 // The greedy steps of light_choice.h; may throw std::bad_alloc (the chosen set).
 Status choose(std::span<const LightCandidate> candidates, std::size_t max_lights, const LightErrorMeasure& error_of,
-              LightChoice& choice) {
+              const std::optional<LightErrorMeasure>& settle, LightChoice& choice) {
   const std::size_t count = candidates.size();
   if (Status st = measure(error_of, {}, choice, choice.error_without); !st.ok()) return st;
   const std::size_t steps = std::min(max_lights, count);  // at most
@@ -39,6 +39,13 @@ Status choose(std::span<const LightCandidate> candidates, std::size_t max_lights
     }
     if (best == count) break;
     trial.back() = best;
+    if (settle) {
+      double settled = best_error;
+      if (Status st = (*settle)(trial, settled); !st.ok()) return st;
+      if (!std::isfinite(settled) || settled > best_error)
+        return Status::error(Errc::InvalidArgument, "settling the lights raised the error");
+      best_error = settled;
+    }
     for (std::size_t k = 0; k < count; ++k)  // itself, and every candidate sharing a texel with it
       if (!taken[k]) taken[k] = k == best || share_a_texel(candidates[best], candidates[k]);
     choice.lights.push_back({best, current, best_error});
@@ -50,11 +57,11 @@ Status choose(std::span<const LightCandidate> candidates, std::size_t max_lights
 }  // namespace
 
 Status choose_lights(std::span<const LightCandidate> candidates, std::size_t max_lights, LightErrorMeasure error_of,
-                     LightChoice& choice) noexcept {
+                     LightChoice& choice, std::optional<LightErrorMeasure> settle) noexcept {
   choice = {};
   try {
     choice.lights.reserve(std::min(max_lights, candidates.size()));
-    return choose(candidates, max_lights, error_of, choice);
+    return choose(candidates, max_lights, error_of, settle, choice);
   } catch (const std::bad_alloc&) {
     return Status::error(Errc::OutOfMemory, "cannot allocate the chosen lights");
   }

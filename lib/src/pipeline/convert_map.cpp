@@ -103,6 +103,8 @@ Status convert_map(const MapImage& map, const ConvertOptions& options, Conversio
     if (seen != nullptr) *seen = stats;
     return st;
   }
+  for (int c = 0; c < kChannelCount; ++c)
+    for (int i = 0; i < kShCount; ++i) radiance.c[c][i] -= extraction.removed.c[c][i];
   return finish_conversion(radiance, stats, extraction, options.finish, &reference, out);
 }
 
