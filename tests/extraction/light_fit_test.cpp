@@ -127,11 +127,14 @@ TEST(LightFit, IsNoWorseThanAnyColoursOfARandomScan) {
     // The fit's own error, recomputed independently, is what it reports, and it is feasible.
     EXPECT_NEAR(error_of(x0, x1, feasible), fit.max_pct[0], 1e-7);
     EXPECT_TRUE(feasible);
-    for (double a = 0; a <= 1.0; a += 0.05)
+    for (double a = 0; a <= 1.0; a += 0.05) {
       for (double b = 0; b <= 1.0; b += 0.05) {
         const double e = error_of(a, b, feasible);
-        if (feasible) EXPECT_LE(fit.max_pct[0], e + 1e-7) << trial << ": " << a << ", " << b;
+        if (feasible) {
+          EXPECT_LE(fit.max_pct[0], e + 1e-7) << trial << ": " << a << ", " << b;
+        }
       }
+    }
   }
 }
 
