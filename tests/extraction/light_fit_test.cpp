@@ -50,6 +50,13 @@ PlantedMap planted(const Dir3& l, const std::array<double, 3>& x, double s) {
   return out;
 }
 
+// The fit's side of the map (prepare_light_fit), with no band factors.
+LightFitProblem problem_of(const PlantedMap& map) {
+  LightFitProblem problem;
+  EXPECT_TRUE(prepare_light_fit(map.samples, map.projected, kNoBandFactors, problem).ok());
+  return problem;
+}
+
 Dir3 unit(double x, double y, double z) {
   const double r = std::sqrt(x * x + y * y + z * z);
   return {x / r, y / r, z / r};
@@ -61,7 +68,7 @@ TEST(LightFit, GivesBackThePlantedColour) {
   const std::array<double, 3> x = {0.2, 0.5, 0.9};
   const PlantedMap map = planted(l, x, 1.0);
   LightFit fit;
-  ASSERT_TRUE(fit_light_colours(map.samples, map.projected, kNoBandFactors, std::vector<Dir3>{l}, fit).ok());
+  ASSERT_TRUE(fit_light_colours(problem_of(map), std::vector<Dir3>{l}, fit).ok());
   ASSERT_EQ(fit.irradiance.size(), 1u);
   // The error |x' - x| max |h| is 0 only at x' = x: the LP's vertex, up to the rounding of a
   // few pivots on O(1) numbers (1e-9 with room); E = pi x.
@@ -78,7 +85,7 @@ TEST(LightFit, GivesBackThePlantedColour) {
 TEST(LightFit, NoLightLeavesTheMapsOwnError) {
   const PlantedMap map = planted(unit(0, 1, 0), {0.5, 0.5, 0.5}, 1.0);
   LightFit fit;
-  ASSERT_TRUE(fit_light_colours(map.samples, map.projected, kNoBandFactors, {}, fit).ok());
+  ASSERT_TRUE(fit_light_colours(problem_of(map), {}, fit).ok());
   EXPECT_TRUE(fit.irradiance.empty());
   // max |b| = 0.5 max |h|; h's largest magnitude over the samples, computed the same way.
   double most = 0;
@@ -105,7 +112,7 @@ TEST(LightFit, IsNoWorseThanAnyColoursOfARandomScan) {
       for (double& v : map.samples.values[i].e_over_pi) v += extra;
     }
     LightFit fit;
-    ASSERT_TRUE(fit_light_colours(map.samples, map.projected, kNoBandFactors, lights, fit).ok());
+    ASSERT_TRUE(fit_light_colours(problem_of(map), lights, fit).ok());
     const ShL2 unity = radiance_to_unity_form(map.projected);
     auto error_of = [&](double x0, double x1, bool& feasible) {
       double worst = 0;
@@ -149,14 +156,14 @@ TEST(LightFit, RefiningFindsThePlantedDirectionWithinReach) {
                            std::cos(a) * l.z + std::sin(a) * e.z);
   std::vector<Dir3> directions = {source};
   const std::vector<double> reach = {5.0};
-  ASSERT_TRUE(refine_light_directions(map.samples, map.projected, kNoBandFactors, std::vector<Dir3>{source}, reach,
+  ASSERT_TRUE(refine_light_directions(problem_of(map), std::vector<Dir3>{source}, reach,
                                       directions)
                   .ok());
   EXPECT_LT(angle_deg(directions[0], l), std::sqrt(2.0) * 0.25 + 1e-9);
   EXPECT_LE(angle_deg(directions[0], source), 5.0 + 1e-9);
   // With a reach of 1 degree it cannot get there: it stops within the reach.
   directions = {source};
-  ASSERT_TRUE(refine_light_directions(map.samples, map.projected, kNoBandFactors, std::vector<Dir3>{source},
+  ASSERT_TRUE(refine_light_directions(problem_of(map), std::vector<Dir3>{source},
                                       std::vector<double>{1.0}, directions)
                   .ok());
   EXPECT_LE(angle_deg(directions[0], source), 1.0 + 1e-9);
@@ -166,10 +173,10 @@ TEST(LightFit, RefiningFindsThePlantedDirectionWithinReach) {
 TEST(LightFit, RefusesBadDirections) {
   const PlantedMap map = planted(unit(0, 1, 0), {0.5, 0.5, 0.5}, 1.0);
   LightFit fit;
-  EXPECT_EQ(fit_light_colours(map.samples, map.projected, kNoBandFactors, std::vector<Dir3>{{0, 0, 0}}, fit).code,
+  EXPECT_EQ(fit_light_colours(problem_of(map), std::vector<Dir3>{{0, 0, 0}}, fit).code,
             Errc::InvalidArgument);
   std::vector<Dir3> directions = {{0, 1, 0}};
-  EXPECT_EQ(refine_light_directions(map.samples, map.projected, kNoBandFactors, {}, std::vector<double>{1.0},
+  EXPECT_EQ(refine_light_directions(problem_of(map), {}, std::vector<double>{1.0},
                                     directions)
                 .code,
             Errc::InvalidArgument);

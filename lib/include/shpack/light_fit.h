@@ -68,12 +68,24 @@ struct LightFit {
   std::array<double, 3> max_pct{};
 };
 
-// Fits the colours of lights towards `directions` (unit, the map's frame) for the map whose
-// exact E/pi `samples` holds and whose radiance SH is `projected` (the map's frame and
-// colours), the finish stage scaling band l by band_factors[l].
+// The map's side of every fit, made once per map: per channel, T(n_i) and S(n_i) over the
+// channel's mean (both empty for a channel whose mean is not positive: no light is fitted
+// there). It refers to `samples`, which must outlive it.
+struct LightFitProblem {
+  const ViewSamples* samples = nullptr;
+  std::array<double, 3> band_factors{};
+  std::array<std::vector<double>, kChannelCount> truth, sh;
+};
+
+// The problem of the map whose exact E/pi `samples` holds and whose radiance SH is `projected`
+// (the map's frame and colours), the finish stage scaling band l by band_factors[l].
+// Errors: OutOfMemory.
+Status prepare_light_fit(const ViewSamples& samples, const ShL2& projected, const std::array<double, 3>& band_factors,
+                         LightFitProblem& out) noexcept;
+
+// Fits the colours of lights towards `directions` (finite, non-zero, the map's frame).
 // Errors: InvalidArgument for a direction that is not finite and non-zero, OutOfMemory.
-Status fit_light_colours(const ViewSamples& samples, const ShL2& projected, const std::array<double, 3>& band_factors,
-                         std::span<const Dir3> directions, LightFit& out) noexcept;
+Status fit_light_colours(const LightFitProblem& problem, std::span<const Dir3> directions, LightFit& out) noexcept;
 
 inline constexpr double kLightReachDeg = 2.0;
 // Measured on the bundled maps (docs/accuracy.md): with 2 radii the worst map (courtyard)
@@ -90,10 +102,9 @@ constexpr double light_reach_deg(double source_radius_deg) noexcept {
 // The angle between two unit directions, degrees (atan2 of |a x b| and a . b: accurate at 0).
 double angle_deg(const Dir3& a, const Dir3& b) noexcept;
 
-// Moves `directions` (unit, in and out), each within reach_deg[k] of sources[k], as above.
+// Moves `directions` (in; unit out), each within reach_deg[k] of sources[k], as above.
 // Errors: those of fit_light_colours, InvalidArgument for spans of unequal sizes.
-Status refine_light_directions(const ViewSamples& samples, const ShL2& projected,
-                               const std::array<double, 3>& band_factors, std::span<const Dir3> sources,
+Status refine_light_directions(const LightFitProblem& problem, std::span<const Dir3> sources,
                                std::span<const double> reach_deg, std::vector<Dir3>& directions) noexcept;
 
 // The radiance SH a fit's lights take out of the map: sum_k E_k Y(l_k) (lights.h).

@@ -7,13 +7,12 @@
 namespace shpack {
 namespace {
 
-// x_basic[i] = beta[i] - sum_j d[i][j] x_nonbasic[j];  z = z0 + sum_j gamma[j] x_nonbasic[j].
+// x_basic[i] = beta[i] - sum_j d[i][j] x_nonbasic[j];  z = const + sum_j gamma[j] x_nonbasic[j].
 // Variables are numbered 0..n-1 (the x of the problem) and n..n+m-1 (the slacks of the rows).
 struct Dictionary {
   std::size_t m, n;
   std::vector<double> d, beta, gamma;
   std::vector<std::size_t> basic, nonbasic;
-  double z0 = 0;
 
   explicit Dictionary(const LinearProgram& lp)
       : m(lp.rows), n(lp.cols), d(lp.a), beta(lp.b), gamma(lp.c), basic(m), nonbasic(n) {
@@ -62,7 +61,6 @@ struct Dictionary {
     const double g = gamma[s];
     for (std::size_t j = 0; j < n; ++j) gamma[j] -= g * row[j];
     gamma[s] = -g * p;
-    z0 += g * beta[r];
     std::swap(basic[r], nonbasic[s]);
   }
 };

@@ -8,6 +8,7 @@
 #include "common/simplex.h"
 #include "shpack/convolution.h"
 #include "shpack/lights.h"
+#include "shpack/vec3.h"
 
 namespace shpack {
 namespace {
@@ -79,90 +80,65 @@ double fit_channel(const LightColumns& columns, const std::vector<double>& truth
   return t0 - solution.x[lights];
 }
 
-// The data of every fit for one map: per channel, T(n_i) and S(n_i) over the channel's mean.
-class ColourFit {
- public:
-  ColourFit(const ViewSamples& samples, const ShL2& projected, const std::array<double, 3>& band_factors)
-      : samples_(samples), band_factors_(band_factors) {
-    ShL2 banded = projected;
-    for (auto& channel : banded.c)
-      for (int i = 0; i < kShCount; ++i) channel[i] *= band_factors[kBand[i]];
-    const ShL2 unity_form = radiance_to_unity_form(banded);
-    for (int c = 0; c < kChannelCount; ++c) {
-      const double mean = samples.mean[c];
-      if (!(mean > 0) || !std::isfinite(mean)) continue;
-      truth_[c].resize(samples.directions.size());
-      sh_[c].resize(samples.directions.size());
-      for (std::size_t i = 0; i < samples.directions.size(); ++i) {
-        const Dir3& n = samples.directions[i];
-        truth_[c][i] = samples.values[i].e_over_pi[c] / mean;
-        sh_[c][i] = eval_unity_form(unity_form, c, n.x, n.y, n.z) / mean;
-      }
-    }
+// The fit at unit directions `unit`.
+LightFit fit_unit(const LightFitProblem& problem, std::span<const Dir3> unit) {
+  const LightColumns columns = light_columns(*problem.samples, unit, problem.band_factors);
+  LightFit out;
+  out.irradiance.assign(unit.size(), {});
+  std::vector<double> x;
+  for (int c = 0; c < kChannelCount; ++c) {
+    if (problem.truth[c].empty()) continue;  // a channel whose mean is not positive: no light
+    out.max_pct[c] = 100.0 * fit_channel(columns, problem.truth[c], problem.sh[c], x);
+    for (std::size_t k = 0; k < unit.size(); ++k)
+      out.irradiance[k][c] = std::numbers::pi * problem.samples->mean[c] * x[k];
   }
-
-  // `unit`: unit directions.
-  LightFit fit(std::span<const Dir3> unit) const {
-    const LightColumns columns = light_columns(samples_, unit, band_factors_);
-    LightFit out;
-    out.irradiance.assign(unit.size(), {});
-    std::vector<double> x;
-    for (int c = 0; c < kChannelCount; ++c) {
-      if (truth_[c].empty()) continue;  // a channel whose mean is not positive: no light
-      out.max_pct[c] = 100.0 * fit_channel(columns, truth_[c], sh_[c], x);
-      for (std::size_t k = 0; k < unit.size(); ++k) out.irradiance[k][c] = std::numbers::pi * samples_.mean[c] * x[k];
-    }
-    return out;
-  }
-
- private:
-  const ViewSamples& samples_;
-  std::array<double, 3> band_factors_;
-  std::array<std::vector<double>, kChannelCount> truth_, sh_;
-};
+  return out;
+}
 
 double worst_channel(const LightFit& fit) noexcept { return std::max({fit.max_pct[0], fit.max_pct[1], fit.max_pct[2]}); }
 
-Dir3 normalised(const Dir3& d) noexcept {
-  const double length = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-  return {d.x / length, d.y / length, d.z / length};
+Vec3 vec(const Dir3& d) noexcept { return {d.x, d.y, d.z}; }
+
+// v / |v| (callers check that |v| is finite and non-zero).
+Dir3 unit_along(Vec3 v) noexcept {
+  const double length = std::sqrt(dot(v, v));
+  return {v.x / length, v.y / length, v.z / length};
 }
 
-bool usable(const Dir3& d) noexcept {
-  const double length = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-  return std::isfinite(length) && length > 0;
-}
-
-Dir3 cross(const Dir3& a, const Dir3& b) noexcept {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+// The unit directions along `directions`; false for one that is zero or not finite.
+bool unit_directions(std::span<const Dir3> directions, std::vector<Dir3>& unit) {
+  unit.clear();
+  for (const Dir3& d : directions) {
+    const double length = std::sqrt(dot(vec(d), vec(d)));
+    if (!std::isfinite(length) || length == 0) return false;
+    unit.push_back(unit_along(vec(d)));
+  }
+  return true;
 }
 
 // d turned by `step` radians towards the tangent e (unit, perpendicular to d).
-Dir3 turned(const Dir3& d, const Dir3& e, double step) noexcept {
-  const double c = std::cos(step), s = std::sin(step);
-  return normalised({c * d.x + s * e.x, c * d.y + s * e.y, c * d.z + s * e.z});
-}
+Dir3 turned(Vec3 d, Vec3 e, double step) noexcept { return unit_along(std::cos(step) * d + std::sin(step) * e); }
 
 // The four compass moves of d: +-e1, +-e2 for an orthonormal tangent frame (e1, e2) of d.
-std::array<Dir3, 4> compass(const Dir3& d, double step) noexcept {
-  const Dir3 axis = std::abs(d.x) < 0.9 ? Dir3{1, 0, 0} : Dir3{0, 1, 0};
-  const Dir3 e1 = normalised(cross(d, axis));
-  const Dir3 e2 = cross(d, e1);
-  const Dir3 m1 = {-e1.x, -e1.y, -e1.z}, m2 = {-e2.x, -e2.y, -e2.z};
-  return {turned(d, e1, step), turned(d, m1, step), turned(d, e2, step), turned(d, m2, step)};
+std::array<Dir3, 4> compass(const Dir3& direction, double step) noexcept {
+  const Vec3 d = vec(direction);
+  const Vec3 axis = std::abs(d.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};  // never along d
+  const Vec3 e1 = vec(unit_along(cross(d, axis)));
+  const Vec3 e2 = cross(d, e1);
+  return {turned(d, e1, step), turned(d, -1.0 * e1, step), turned(d, e2, step), turned(d, -1.0 * e2, step)};
 }
 
 // One sweep at one step over every light: the first move that lowers the fitted error is
 // taken. True when any was.
-bool sweep(const ColourFit& problem, std::span<const Dir3> sources, std::span<const double> reach_deg, double step,
-           std::vector<Dir3>& directions, double& best) {
+bool sweep(const LightFitProblem& problem, std::span<const Dir3> sources, std::span<const double> reach_deg,
+           double step, std::vector<Dir3>& directions, double& best) {
   bool moved = false;
   std::vector<Dir3> trial = directions;
   for (std::size_t k = 0; k < directions.size(); ++k) {
     for (const Dir3& move : compass(directions[k], step)) {
       if (angle_deg(move, sources[k]) > reach_deg[k]) continue;
       trial[k] = move;
-      const double error = worst_channel(problem.fit(trial));
+      const double error = worst_channel(fit_unit(problem, trial));
       if (error < best) {
         best = error, directions[k] = move, moved = true;
         break;
@@ -176,38 +152,55 @@ bool sweep(const ColourFit& problem, std::span<const Dir3> sources, std::span<co
 }  // namespace
 
 double angle_deg(const Dir3& a, const Dir3& b) noexcept {
-  const Dir3 c = cross(a, b);
-  const double sine = std::sqrt(c.x * c.x + c.y * c.y + c.z * c.z);
-  return std::atan2(sine, a.x * b.x + a.y * b.y + a.z * b.z) * (180.0 / std::numbers::pi);
+  const Vec3 u = vec(a), v = vec(b), c = cross(u, v);
+  return std::atan2(std::sqrt(dot(c, c)), dot(u, v)) * (180.0 / std::numbers::pi);
 }
 
-Status fit_light_colours(const ViewSamples& samples, const ShL2& projected, const std::array<double, 3>& band_factors,
-                         std::span<const Dir3> directions, LightFit& out) noexcept {
+Status prepare_light_fit(const ViewSamples& samples, const ShL2& projected, const std::array<double, 3>& band_factors,
+                         LightFitProblem& out) noexcept {
+  try {
+    LightFitProblem problem{&samples, band_factors, {}, {}};
+    ShL2 banded = projected;
+    for (auto& channel : banded.c)
+      for (int i = 0; i < kShCount; ++i) channel[i] *= band_factors[kBand[i]];
+    const ShL2 unity_form = radiance_to_unity_form(banded);
+    for (int c = 0; c < kChannelCount; ++c) {
+      const double mean = samples.mean[c];
+      if (!(mean > 0) || !std::isfinite(mean)) continue;
+      for (std::size_t i = 0; i < samples.directions.size(); ++i) {
+        const Dir3& n = samples.directions[i];
+        problem.truth[c].push_back(samples.values[i].e_over_pi[c] / mean);
+        problem.sh[c].push_back(eval_unity_form(unity_form, c, n.x, n.y, n.z) / mean);
+      }
+    }
+    out = std::move(problem);
+    return Status::success();
+  } catch (const std::bad_alloc&) {
+    return Status::error(Errc::OutOfMemory, "out of memory preparing the light fit");
+  }
+}
+
+Status fit_light_colours(const LightFitProblem& problem, std::span<const Dir3> directions, LightFit& out) noexcept {
   try {
     std::vector<Dir3> unit;
-    for (const Dir3& d : directions) {
-      if (!usable(d)) return Status::error(Errc::InvalidArgument, "a light direction is not finite and non-zero");
-      unit.push_back(normalised(d));
-    }
-    out = ColourFit(samples, projected, band_factors).fit(unit);
+    if (!unit_directions(directions, unit))
+      return Status::error(Errc::InvalidArgument, "a light direction is not finite and non-zero");
+    out = fit_unit(problem, unit);
     return Status::success();
   } catch (const std::bad_alloc&) {
     return Status::error(Errc::OutOfMemory, "out of memory fitting the light colours");
   }
 }
 
-Status refine_light_directions(const ViewSamples& samples, const ShL2& projected,
-                               const std::array<double, 3>& band_factors, std::span<const Dir3> sources,
+Status refine_light_directions(const LightFitProblem& problem, std::span<const Dir3> sources,
                                std::span<const double> reach_deg, std::vector<Dir3>& directions) noexcept {
   if (sources.size() != directions.size() || reach_deg.size() != directions.size())
     return Status::error(Errc::InvalidArgument, "a light's source or reach is missing");
-  for (const Dir3& d : directions)
-    if (!usable(d)) return Status::error(Errc::InvalidArgument, "a light direction is not finite and non-zero");
   try {
     std::vector<Dir3> unit;
-    for (const Dir3& d : directions) unit.push_back(normalised(d));
-    const ColourFit problem(samples, projected, band_factors);
-    double best = worst_channel(problem.fit(unit));
+    if (!unit_directions(directions, unit))
+      return Status::error(Errc::InvalidArgument, "a light direction is not finite and non-zero");
+    double best = worst_channel(fit_unit(problem, unit));
     for (double step_deg : kLightRefineStepsDeg) {
       const double step = step_deg * (std::numbers::pi / 180.0);
       for (int k = 0; k < kLightRefineSweeps && sweep(problem, sources, reach_deg, step, unit, best); ++k) {

@@ -39,10 +39,11 @@ std::array<double, 3> band_factors_of(const FinishOptions& finish) noexcept {
 // less theirs), and its settling step, which moves the chosen lights' directions.
 class ChoiceMeasure {
  public:
-  ChoiceMeasure(const ShL2& projected, std::span<const LightCandidate> candidates, const FinishOptions& finish,
-                const ViewSamples& reference)
-      : projected_(projected), candidates_(candidates), finish_(finish), reference_(reference),
-        transform_{finish.colour_matrix, finish.intensity, finish.rotate_deg}, band_factors_(band_factors_of(finish)) {}
+  // `problem`: the fit of the map whose exact projection is `projected` (prepare_light_fit).
+  ChoiceMeasure(const ShL2& projected, const LightFitProblem& problem, std::span<const LightCandidate> candidates,
+                const FinishOptions& finish)
+      : projected_(projected), problem_(problem), candidates_(candidates), finish_(finish),
+        transform_{finish.colour_matrix, finish.intensity, finish.rotate_deg} {}
 
   // The error with `chosen` as lights: the settled ones at their settled directions, the
   // others at their sources' centres.
@@ -66,8 +67,7 @@ class ChoiceMeasure {
       settled_directions_ = directions_;
       for (const std::vector<Dir3>* start : {&settled_directions_, &sources_}) {
         std::vector<Dir3> refined = *start;
-        if (Status st = refine_light_directions(reference_, projected_, band_factors_, sources_, limits_, refined);
-            !st.ok())
+        if (Status st = refine_light_directions(problem_, sources_, reach_deg_, refined); !st.ok())
           return st;
         directions_ = refined;
         double refined_error = 0;
@@ -88,20 +88,20 @@ class ChoiceMeasure {
   // Directions, sources and limits of `chosen` (light_fit.h: a light stays within
   // kLightReachRadii of its source's radius plus kLightReachDeg of its centre).
   void set_lights(std::span<const std::size_t> chosen) {
-    directions_.clear(), sources_.clear(), limits_.clear();
+    directions_.clear(), sources_.clear(), reach_deg_.clear();
     for (std::size_t j = 0; j < chosen.size(); ++j) {
       const SunLight& source = candidates_[chosen[j]].light;
       const bool settled = j < settled_.size() && settled_[j] == chosen[j];
       directions_.push_back(settled ? settled_directions_[j] : source.direction);
       sources_.push_back(source.direction);
-      limits_.push_back(light_reach_deg(source.radius_deg));
+      reach_deg_.push_back(light_reach_deg(source.radius_deg));
     }
     chosen_.assign(chosen.begin(), chosen.end());
   }
 
   Status fit_and_measure(double& error) {
     LightFit fit;
-    if (Status st = fit_light_colours(reference_, projected_, band_factors_, directions_, fit); !st.ok()) return st;
+    if (Status st = fit_light_colours(problem_, directions_, fit); !st.ok()) return st;
     lights_.clear();
     for (std::size_t j = 0; j < chosen_.size(); ++j) {
       lights_.push_back(candidates_[chosen_[j]].light);
@@ -117,19 +117,18 @@ class ChoiceMeasure {
     if (Status st = finish_projection(rest, finish_, sh); !st.ok()) return st;
     shown_.clear();
     for (const SunLight& light : lights_) shown_.push_back(finish_light(light, finish_).unity);
-    error = unity_view_error(reference_, transform_, sh.shader, shown_).max_pct;
+    error = unity_view_error(*problem_.samples, transform_, sh.shader, shown_).max_pct;
     return Status::success();
   }
 
   const ShL2& projected_;
+  const LightFitProblem& problem_;
   std::span<const LightCandidate> candidates_;
   const FinishOptions& finish_;
-  const ViewSamples& reference_;
   ViewTransform transform_;
-  std::array<double, 3> band_factors_;
   std::vector<std::size_t> chosen_, settled_;  // the set measured; the prefix settled
   std::vector<Dir3> directions_, sources_, settled_directions_;
-  std::vector<double> limits_;
+  std::vector<double> reach_deg_;
   std::vector<SunLight> lights_;
   ShL2 removed_;
   std::vector<UnitySunLight> shown_;
@@ -152,7 +151,10 @@ Status extract_lights(const MapImage& map, const ConvertOptions& options, const 
   if (Status st = project_equirect(map.image, exact, projected); !st.ok()) return st;
   Extraction result;
   try {
-    ChoiceMeasure measure(projected, candidates, options.finish, reference);
+    LightFitProblem problem;
+    if (Status st = prepare_light_fit(reference, projected, band_factors_of(options.finish), problem); !st.ok())
+      return st;
+    ChoiceMeasure measure(projected, problem, candidates, options.finish);
     auto settle = [&measure](std::span<const std::size_t> chosen, double& error) {
       return measure.settle(chosen, error);
     };
