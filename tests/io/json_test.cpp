@@ -1,4 +1,4 @@
-// The JSON output: the keys of design.md in its order, exact numbers both ways, and a
+// The JSON output: the keys of docs/json-format.md in its order, exact numbers both ways, and a
 // reader whose errors point at the offending value.
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // conventions.h - every geometric convention of shpack, stated once.
 //
-// Normative source: shared/docs/unity-sh-conventions.md (copied to docs/conventions.md).
+// Normative source: docs/conventions.md.
 // tests/projection/conventions_test.cpp pins each statement below with a test.
 //
 // Frame. All SH that shpack computes are in Unity's world frame: LEFT-handed, +X right,

@@ -11,7 +11,7 @@
 //   mirrorball  a mirrored ball photographed along +Z, N x N    (project_sphere_map.h)
 //   faces       six face files (`convert --faces`), each N x N; never detected from one image
 //
-// Detection (design.md): 2:1 is equirect, 4:3 hcross, 3:4 vcross, 6:1 hstrip, 1:6 vstrip,
+// Detection (docs/layouts.md): 2:1 is equirect, 4:3 hcross, 3:4 vcross, 6:1 hstrip, 1:6 vstrip,
 // and a 1x1 image is a uniform environment (read as equirect, which handles it exactly). A
 // square image is ambiguous (octahedral, angular or mirror ball) and any other shape fits
 // no layout: both need the layout named.

@@ -6,7 +6,7 @@
 //  [2] P.-P. Sloan, "Stupid Spherical Harmonics (SH) Tricks", GDC 2008.
 //  [3] Unity, CGIncludes/UnityCG.cginc: SHEvalLinearL0L1, SHEvalLinearL2.
 //  [4] Unity, UnityCsReference Runtime/Export/Math/SphericalHarmonicsL2.bindings.cs.
-//  [5] shared/docs/unity-sh-conventions.md (normative for this project), sections 3-6.
+//  [5] docs/conventions.md (normative for this project), sections 3-6.
 //
 // Basis: real SH without the Condon-Shortley phase, Y_i = k_i * P_i(x, y, z) on the unit
 // sphere, in Unity's frame (conventions.h). Index order is Unity's, i = l*(l+1) + m:

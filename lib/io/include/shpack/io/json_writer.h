@@ -1,8 +1,8 @@
 // json_writer.h - the output document as JSON text (docs/json-format.md).
 //
-// Keys appear in the order of design.md. Doubles are written in the shortest form that
-// reads back to the same double; each float32 of sphericalHarmonicsL2 and shader is
-// written as the double of equal value, so any reader gets the exact float back.
+// Keys appear in the order of docs/json-format.md's example. Doubles are written in the
+// shortest form that reads back to the same double; each float32 of sphericalHarmonicsL2
+// and shader is written as the double of equal value, so any reader gets the exact float back.
 #pragma once
 
 #include <string>
