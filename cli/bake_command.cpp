@@ -13,6 +13,8 @@
 #include "output_check.h"
 #include "report.h"
 #include "shpack/bake/bake.h"
+#include "shpack/bake/lightmap_output.h"
+#include "shpack/io/exr_writer.h"
 #include "shpack/io/atomic_write.h"
 #include "shpack/scene/scene_loader.h"
 #include "validators.h"
@@ -80,6 +82,30 @@ void warn_capped_probes(const scene::Scene& scene, const bake::BakeResult& resul
   report_error(os.str());
 }
 
+// Each lightmap's images (<name>.<group>.exr) and sidecar (<name>.lightmap.json) in `dir`,
+// each file written atomically; the first failure stops and is returned.
+io::IoStatus write_lightmaps(const scene::Scene& scene, const bake::LightmapBakeResult& result,
+                             const std::filesystem::path& dir) {
+  for (std::size_t m = 0; m < result.maps.size(); ++m) {
+    const scene::LightmapTarget& target = scene.lightmaps[m];
+    const bake::LightmapTexels& map = result.maps[m];
+    std::vector<bake::LightmapImage> images;
+    std::string why;
+    if (!bake::lightmap_images(target, map, images, why))
+      return io::IoStatus::error(io::IoErrc::Unsupported, scene.file, why);
+    for (const bake::LightmapImage& image : images)
+      if (io::IoStatus st = io::write_exr(dir / (target.name + "." + image.group + ".exr"), map.width, map.height,
+                                          image.channels, image.pixels);
+          !st.ok())
+        return st;
+    if (io::IoStatus st = io::write_file_atomically(dir / (target.name + ".lightmap.json"),
+                                                    bake::lightmap_sidecar(scene, target, map, result));
+        !st.ok())
+      return st;
+  }
+  return io::IoStatus::success();
+}
+
 }  // namespace
 
 CLI::App* add_bake_command(CLI::App& app, BakeCommandOptions& options) {
@@ -105,6 +131,9 @@ CLI::App* add_bake_command(CLI::App& app, BakeCommandOptions& options) {
       ->type_name("N")
       ->check(unsigned_integer());
   cmd->add_flag("--quiet", options.quiet, "No progress bar on stderr");
+  cmd->add_option("--lightmap-dir", options.lightmap_dir,
+                  "Folder of the lightmaps' images and sidecars (default: the output's folder)")
+      ->type_name("DIR");
   return cmd;
 }
 
@@ -137,6 +166,22 @@ int run_bake(const BakeCommandOptions& options) {
   }
   warn_invalid_probes(scene, result);
   warn_capped_probes(scene, result);
+  bake::LightmapBakeResult lightmaps;
+  if (!scene.lightmaps.empty()) {
+    if (io::IoStatus st = bake::bake_lightmaps(scene, bake_options, lightmaps); !st.ok()) {
+      report_error(st.message);
+      return kExitFailure;
+    }
+    json_options.lightmaps = &lightmaps;
+    std::filesystem::path dir = options.lightmap_dir;
+    if (dir.empty() && !options.output.empty() && options.output != "-")
+      dir = std::filesystem::path(options.output).parent_path();
+    if (dir.empty()) dir = ".";
+    if (io::IoStatus st = write_lightmaps(scene, lightmaps, dir); !st.ok()) {
+      report_error(st.message);
+      return kExitFailure;
+    }
+  }
   std::string json;
   if (io::IoStatus st = bake::bake_to_json(scene, result, json_options, json); !st.ok()) {
     report_error(st.message);

@@ -22,6 +22,8 @@
 #include "shpack/convolution.h"
 #include "sobol.h"
 #include "scene_lights.h"
+#include "surface_domain.h"
+#include "surface_points.h"
 #include "tracer.h"
 
 namespace shpack::bake {
@@ -124,7 +126,16 @@ struct Engine {
   // rounding 6e-8) and its sphere roots lose more near tangency; 1e-4 clears both.
   static constexpr double epsilon = 1e-4;
 
+  // Surface receivers (surface_points.h): one unit normal per probe position, each gathering
+  // light over the hemisphere about it; null for probes, which gather the whole sphere.
+  const std::vector<Vec3d>* normals = nullptr;
+  std::function<std::string(std::size_t)> receiver_label;  // how messages name receiver k
+  std::vector<ShL2> environment_part;  // surfaces: each one's environment over its hemisphere
+
   Engine(const scene::Scene& s, const BakeOptions& o, unsigned t) : scene(s), options(o), threads(t) {}
+
+  bool surfaces() const noexcept { return normals != nullptr; }
+  Domain domain(std::size_t k) const noexcept { return surfaces() ? Domain{true, (*normals)[k]} : Domain{}; }
 
   // Adds one probe's part of one effect to its total (passes run in a fixed order, so every
   // total is summed in the same order) and keeps it if asked.
@@ -140,7 +151,7 @@ struct Engine {
   std::uint64_t seed() const { return scene.settings.seed; }
 
   IoStatus error_at(std::size_t probe, std::size_t light, const Status& st) const {
-    const std::string where = scene::probe_label(scene, probe);
+    const std::string where = receiver_label ? receiver_label(probe) : scene::probe_label(scene, probe);
     if (st.code == Errc::ProbeInsideLight)
       return IoStatus::error(IoErrc::BadDocument, scene.file,
                              where + " is inside " + scene.lights[light].label + " (" + st.what + ")");
@@ -153,9 +164,11 @@ struct Engine {
     run_pass(scene.probes.size(), threads, "direct", options, [&](std::size_t k, Counters& n) {
       ShL2 out;
       for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-        const Status st = add_light(scene.lights[l], scene.probes[k], out);
+        ShL2 light;
+        const Status st = add_light(scene.lights[l], scene.probes[k], light);
         ++n.analytic;
         if (!st.ok() && failure[k].first.ok()) failure[k] = {st, l};
+        if (st.ok()) add_scaled(out, surfaces() ? above_horizon(k, l, light, n, true) : light, 1.0);
       }
       commit(k, Effect::Direct, out);
     }, cost);
@@ -165,10 +178,107 @@ struct Engine {
   }
 
   void add_environment(EffectCost& cost) {
+    if (surfaces()) environment_part.assign(scene.probes.size(), ShL2{});
     run_pass(scene.probes.size(), threads, "environment", options, [&](std::size_t k, Counters& n) {
-      commit(k, Effect::Environment, environment.sh());
       ++n.analytic;
+      if (!surfaces()) {
+        commit(k, Effect::Environment, environment.sh());
+        return;
+      }
+      const Estimate est = hemisphere_estimate(k, environment.sh(), guide(), Effect::Environment, 0,
+                                               [&](const Vec3d& w) { return environment.radiance(w); }, n);
+      record(k, Effect::Environment, est, n);
+      environment_part[k] = est.value;
+      commit(k, Effect::Environment, est.value);
     }, cost);
+  }
+
+  // ---- Surface receivers: the hemisphere about the normal (surface_domain.h) ----
+
+  // The part over receiver k's hemisphere of a distant radiance R (the environment, a
+  // hemisphere or ambient light) whose whole-sphere SH is `sh`: M(n) sh exactly for the
+  // band-limited part, plus the residual int_{hemisphere} (R - sh) Y by Monte Carlo (uniform
+  // over the hemisphere and, with `guide`, by the radiance's brightness, combined by the
+  // power heuristic). Zero residual (R band-limited, as a uniform sky) makes it exact.
+  struct ResidualState {
+    Domain domain;
+    const DirectionDistribution& guide;
+    const ShL2& sh;
+    std::function<Rgb(const Vec3d&)> radiance;
+    Counters& n;
+    std::array<SobolSet, kBatches> uniform, guided;
+    std::array<ShL2, kBatches> sum{};
+    void add(int b, const Vec3d& w, double factor) {
+      const Rgb l = radiance(w), s = eval_radiance(sh, w);
+      add_basis(sum[b], w, {factor * (l[0] - s[0]), factor * (l[1] - s[1]), factor * (l[2] - s[2])});
+    }
+    void extend(int b, std::uint32_t from, std::uint32_t to) {
+      for (std::uint32_t i = from; i < to; ++i) {
+        const auto [u1, u2] = uniform[b].point(i);
+        const Vec3d w = domain.sample(u1, u2);
+        add(b, w, mis_factor(domain.pdf(w), guide.pdf(w)));
+        if (guide.empty()) continue;
+        const auto [v1, v2] = guided[b].point(i);
+        const DirectionSample s = guide.sample(v1, v2);
+        if (domain.contains(s.dir)) add(b, s.dir, mis_factor(s.pdf, domain.pdf(s.dir)));
+      }
+    }
+    ShL2 value(int b, std::uint32_t m) const { return scaled(sum[b], 1.0 / m); }
+  };
+  template <class Radiance>
+  Estimate hemisphere_estimate(std::size_t k, const ShL2& sh, const DirectionDistribution& guide_of, Effect e,
+                               std::size_t light, Radiance&& radiance, Counters& n) const {
+    const Domain d = domain(k);
+    const ShL2 exact = hemisphere_part(hemisphere_gram(d.normal), sh);
+    ResidualState state{d, guide_of, sh, radiance, n, {}, {}};
+    for (int b = 0; b < kBatches; ++b) {
+      state.uniform[b] = sobol(e, k, light, b, 0);
+      state.guided[b] = sobol(e, k, light, b, 1);
+    }
+    Estimate est = run_batches(plan(scene.settings.sky_samples), exact, state);
+    add_scaled(est.value, exact, 1.0);
+    return est;
+  }
+
+  // The direct pass records a light's horizon estimate; the shadows pass, asking again, only counts its samples.
+  void count(std::size_t k, const Estimate& est, Counters& n, bool record_it) {
+    if (record_it)
+      record(k, Effect::Direct, est, n);
+    else
+      n.samples += est.samples;
+  }
+
+  // Light l's part above receiver k's horizon, its whole-sphere closed form `closed`: all of
+  // it, none of it, or (a light across the horizon) the closed form less the part below, by
+  // its points (the shadow estimator with the horizon as the only occluder). Distant lights
+  // through hemisphere_estimate. Deterministic in (k, l): the shadows pass asks again.
+  ShL2 above_horizon(std::size_t k, std::size_t l, const ShL2& closed, Counters& n, bool record_it) {
+    const scene::SceneLight& light = scene.lights[l];
+    if (is_distant(light)) {
+      if (light.type == scene::LightType::Ambient)  // constant: band-limited, M(n) is exact
+        return hemisphere_part(hemisphere_gram((*normals)[k]), closed);
+      static const DirectionDistribution none;
+      const Estimate est = hemisphere_estimate(k, closed, none, Effect::Direct, l,
+                                               [&](const Vec3d& w) { return distant_radiance(light, w); }, n);
+      count(k, est, n, record_it);
+      return est.value;
+    }
+    switch (horizon_of(light, probe_at(k), (*normals)[k])) {
+      case Horizon::Above: return closed;
+      case Horizon::Below: return {};
+      case Horizon::Straddles: break;
+    }
+    if (is_delta(light)) return closed;  // only a point light on the plane itself: measure zero
+    std::vector<ShadowedLight> one(1);
+    one[0].light = l;
+    one[0].closed = closed;
+    one[0].radiance = light_radiance(light);
+    for (int b = 0; b < kBatches; ++b) one[0].points[b] = sobol(Effect::Direct, k, l, b);
+    ShadowState state{*this, probe_at(k), domain(k), true, one, n};
+    Estimate est = run_batches(plan(scene.settings.shadow_samples), closed, state);
+    count(k, est, n, record_it);
+    add_scaled(est.value, closed, 1.0);
+    return est.value;
   }
 
   // The sample plan of an effect: its fixed count, or the scene's target and cap; in the
@@ -214,22 +324,31 @@ struct Engine {
     std::array<ShL2, kBatches> visible{}, full{};
     std::array<double, kBatches> w_visible{}, w_total{};
   };
+  // With `horizon`, the only occluder is the receiver's tangent plane (above_horizon: no
+  // rays); otherwise points below the horizon are not the light's to shadow (its `closed` is
+  // already the part above) and the rest are traced.
   struct ShadowState {
     const Engine& engine;
     Vec3d p;
+    Domain domain;
+    bool horizon;
     std::vector<ShadowedLight>& lights;
     Counters& n;
+    bool visible(const LightSample& s) const {
+      if (horizon) return domain.contains(s.dir);
+      ++n.rays;
+      return !engine.tracer->occluded(p, s.dir, 0.0, s.distance * (1.0 - 1e-7));
+    }
     void extend(int b, std::uint32_t from, std::uint32_t to) {
       for (ShadowedLight& sl : lights)
         for (std::uint32_t i = from; i < to; ++i) {
           const auto [u1, u2] = sl.points[b].point(i);
           const LightSample s = light_point(engine.scene.lights[sl.light], p, u1, u2);
-          if (s.weight == 0) continue;
-          ++n.rays;
+          if (s.weight == 0 || (!horizon && !domain.contains(s.dir))) continue;
           const Rgb w = {s.weight * sl.radiance[0], s.weight * sl.radiance[1], s.weight * sl.radiance[2]};
           add_basis(sl.full[b], s.dir, w);
           sl.w_total[b] += s.weight;
-          if (!engine.tracer->occluded(p, s.dir, 0.0, s.distance * (1.0 - 1e-7))) {
+          if (visible(s)) {
             add_basis(sl.visible[b], s.dir, w);
             sl.w_visible[b] += s.weight;
           }
@@ -266,6 +385,10 @@ struct Engine {
         }
         ShL2 closed;
         if (!add_light(light, scene.probes[k], closed).ok() || closed == ShL2{}) continue;
+        if (surfaces()) {  // the part above the horizon is what can be shadowed
+          closed = above_horizon(k, l, closed, n, false);
+          if (closed == ShL2{}) continue;
+        }
         if (is_delta(light)) {  // one ray, exact
           const LightSample s = light_point(light, p, 0, 0);
           ++n.rays;
@@ -281,7 +404,7 @@ struct Engine {
         extended.push_back(std::move(sl));
       }
       if (!extended.empty()) {
-        ShadowState state{*this, p, extended, n};
+        ShadowState state{*this, p, domain(k), false, extended, n};
         const Estimate est = run_batches(plan(scene.settings.shadow_samples), denominator(k), state);
         add_scaled(out, est.value, 1.0);
         record(k, Effect::Shadows, est, n);
@@ -312,6 +435,8 @@ struct Engine {
   struct SkyState {
     const Engine& engine;
     Vec3d p;
+    Domain domain;
+    const ShL2& env;  // the environment over the domain (a surface's: its environment pass)
     Counters& n;
     std::array<SobolSet, kBatches> uniform, guided;
     std::array<ShL2, kBatches> hidden{}, full{};
@@ -332,31 +457,31 @@ struct Engine {
       const DirectionDistribution& sky = engine.guide();
       for (std::uint32_t i = from; i < to; ++i) {
         const auto [u1, u2] = uniform[b].point(i);
-        const Vec3d w = uniform_sphere(u1, u2);
-        add(b, w, mis_factor(kUniformPdf, sky.pdf(w)));
+        const Vec3d w = domain.sample(u1, u2);
+        add(b, w, mis_factor(domain.pdf(w), sky.pdf(w)));
         if (sky.empty()) continue;
         const auto [v1, v2] = guided[b].point(i);
         const DirectionSample s = sky.sample(v1, v2);
-        add(b, s.dir, mis_factor(s.pdf, kUniformPdf));
+        if (domain.contains(s.dir)) add(b, s.dir, mis_factor(s.pdf, domain.pdf(s.dir)));
       }
     }
     ShL2 value(int b, std::uint32_t m) const {
       ShL2 out;
       if (w_hidden[b] == 0 || w_total[b] == 0) return out;
       if (w_hidden[b] == w_total[b] && hidden[b] == full[b]) {
-        add_scaled(out, engine.environment.sh(), -1.0);
+        add_scaled(out, env, -1.0);
         return out;
       }
       const double h = w_hidden[b] / w_total[b];
       add_scaled(out, hidden[b], -1.0 / m);
-      add_scaled(out, engine.environment.sh(), -h);
+      add_scaled(out, env, -h);
       add_scaled(out, full[b], h / m);
       return out;
     }
   };
   void sky_occlusion(EffectCost& cost) {
     run_pass(scene.probes.size(), threads, "sky_occlusion", options, [&](std::size_t k, Counters& n) {
-      SkyState state{*this, probe_at(k), n, {}, {}};
+      SkyState state{*this, probe_at(k), domain(k), surfaces() ? environment_part[k] : environment.sh(), n, {}, {}};
       sample_directions(Effect::SkyOcclusion, k, scene.settings.sky_samples, state, n);
     }, cost);
   }
@@ -367,6 +492,7 @@ struct Engine {
   struct EmissionState {
     const Engine& engine;
     Vec3d p;
+    Domain domain;
     Counters& n;
     bool hides_sky;
     std::array<SobolSet, kBatches> uniform, guided;
@@ -383,18 +509,18 @@ struct Engine {
       const EmitterSampler& emitters = *engine.emitters;
       for (std::uint32_t i = from; i < to; ++i) {
         const auto [u1, u2] = uniform[b].point(i);
-        const Vec3d w = uniform_sphere(u1, u2);
+        const Vec3d w = domain.sample(u1, u2);
         ++n.rays;
         const Hit hit = engine.tracer->intersect(p, w, 0.0);
         if (hit.hit && !is_black(engine.scene.geometry[hit.shape].emission))
-          add(b, w, hit.shape, mis_factor(kUniformPdf, emitters.pdf(p, w, hit)));
+          add(b, w, hit.shape, mis_factor(domain.pdf(w), emitters.pdf(p, w, hit)));
         if (emitters.empty()) continue;
         const auto [v1, v2] = guided[b].point(i);
         const EmitterSample s = emitters.sample(p, v1, v2);
-        if (!(s.pdf > 0)) continue;
+        if (!(s.pdf > 0) || !domain.contains(s.dir)) continue;
         ++n.rays;
         if (!engine.tracer->occluded(p, s.dir, 0.0, s.distance - engine.offset_at(p + s.distance * s.dir)))
-          add(b, s.dir, s.shape, mis_factor(s.pdf, kUniformPdf));
+          add(b, s.dir, s.shape, mis_factor(s.pdf, domain.pdf(s.dir)));
       }
     }
     ShL2 value(int b, std::uint32_t m) const { return scaled(sum[b], 1.0 / m); }
@@ -402,7 +528,7 @@ struct Engine {
   void emission(EffectCost& cost) {
     const bool hides_sky = scene.effects.environment && !scene.effects.sky_occlusion;
     run_pass(scene.probes.size(), threads, "emission", options, [&](std::size_t k, Counters& n) {
-      EmissionState state{*this, probe_at(k), n, hides_sky, {}, {}};
+      EmissionState state{*this, probe_at(k), domain(k), n, hides_sky, {}, {}};
       sample_directions(Effect::Emission, k, scene.settings.sky_samples, state, n);
     }, cost);
   }
@@ -503,6 +629,7 @@ struct Engine {
   struct BounceState {
     const Engine& engine;
     Vec3d p;
+    Domain domain;
     Counters& n;
     std::array<SobolSet, kBatches> first;
     std::array<std::uint64_t, kBatches> padding{};  // keys of each batch's PathPoints
@@ -510,17 +637,19 @@ struct Engine {
     void extend(int b, std::uint32_t from, std::uint32_t to) {
       for (std::uint32_t i = from; i < to; ++i) {
         const auto [u1, u2] = first[b].point(i);
-        const Vec3d w0 = uniform_sphere(u1, u2);
+        const Vec3d w0 = domain.sample(u1, u2);
+        const double pdf = domain.pdf(w0);
+        if (!(pdf > 0)) continue;
         PathPoints points(padding[b], i);
         const Rgb l = engine.path(p, w0, points, n);
-        add_basis(sum[b], w0, {l[0] / kUniformPdf, l[1] / kUniformPdf, l[2] / kUniformPdf});
+        add_basis(sum[b], w0, {l[0] / pdf, l[1] / pdf, l[2] / pdf});
       }
     }
     ShL2 value(int b, std::uint32_t m) const { return scaled(sum[b], 1.0 / m); }
   };
   void bounce(EffectCost& cost) {
     run_pass(scene.probes.size(), threads, "bounce", options, [&](std::size_t k, Counters& n) {
-      BounceState state{*this, probe_at(k), n, {}};
+      BounceState state{*this, probe_at(k), domain(k), n, {}};
       for (int b = 0; b < kBatches; ++b) {
         state.first[b] = sobol(Effect::Bounce, k, 0, b);
         const std::size_t key = 1000 + static_cast<std::size_t>(b);  // apart from sobol()'s keys
@@ -579,9 +708,68 @@ const char* effect_name(Effect effect) noexcept {
   return "unknown";
 }
 
+namespace {
+
+// The effects' passes over an engine's receivers, in bake.h's order, into `result` (radiance,
+// sampling, effects, costs; the tracer's cost when it builds one).
+IoStatus run_effects(Engine& engine, BakeResult& result) {
+  const scene::Scene& scene = engine.scene;
+  const std::size_t count = scene.probes.size();
+  engine.total.assign(count, ShL2{});
+  engine.sampling.assign(count, {});
+  if (engine.options.keep_effects) engine.parts.assign(count, {});
+  auto& costs = result.costs;
+  const auto cost = [&](Effect e) -> EffectCost& { return costs[static_cast<std::size_t>(e)]; };
+  const scene::SceneEffects& fx = scene.effects;
+  if (fx.direct)
+    if (IoStatus st = engine.direct(cost(Effect::Direct)); !st.ok()) return st;
+  if (fx.environment) {
+    const auto start = Clock::now();
+    // Surfaces look the environment up for the part of their hemisphere the SH misses.
+    const bool lookup = fx.sky_occlusion || fx.bounces > 0 || fx.emission || engine.surfaces();
+    if (IoStatus st = engine.environment.load(scene, lookup, engine.threads); !st.ok()) return st;
+    cost(Effect::Environment).time_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    engine.add_environment(cost(Effect::Environment));
+  }
+  const bool traces = fx.shadows || fx.sky_occlusion || fx.emission || fx.bounces > 0;
+  if (traces && !scene.geometry.empty()) {
+    if (!engine.tracer)  // built before for validity
+      if (IoStatus st = engine.build_tracer(result.geometry); !st.ok()) return st;
+    const auto sample_effects = [&] {
+      if (fx.shadows) engine.shadows(cost(Effect::Shadows));
+      if (fx.sky_occlusion) engine.sky_occlusion(cost(Effect::SkyOcclusion));
+      if (fx.emission) engine.emission(cost(Effect::Emission));
+      if (fx.bounces > 0) engine.bounce(cost(Effect::Bounce));
+    };
+    if (scene.settings.target_error_pct > 0) {  // the pilot (Engine::kPilotSamples)
+      engine.pilot = engine.total;
+      engine.piloting = true;
+      sample_effects();
+      engine.piloting = false;
+    }
+    sample_effects();
+  } else {
+    // No geometry: nothing to hide, emit or reflect; the effects cost nothing.
+    cost(Effect::Shadows).enabled = fx.shadows;
+    cost(Effect::SkyOcclusion).enabled = fx.sky_occlusion;
+    cost(Effect::Emission).enabled = fx.emission;
+    cost(Effect::Bounce).enabled = fx.bounces > 0;
+  }
+  result.radiance = std::move(engine.total);
+  result.sampling = std::move(engine.sampling);
+  result.effects = std::move(engine.parts);
+  return IoStatus::success();
+}
+
+unsigned thread_count(const BakeOptions& options) {
+  return options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+}
+
+}  // namespace
+
 IoStatus bake(const scene::Scene& scene, const BakeOptions& options, BakeResult& out) {
   try {
-    const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    const unsigned threads = thread_count(options);
     BakeResult result;
     // Probe validity (probe_validity.h) first: it needs the ray tracer whenever the scene has
     // geometry, even if no effect traces rays, and "offset" moves probes before any pass (the
@@ -604,49 +792,7 @@ IoStatus bake(const scene::Scene& scene, const BakeOptions& options, BakeResult&
       result.geometry = {};
       if (IoStatus st = second->build_tracer(result.geometry); !st.ok()) return st;
     }
-    Engine& engine = second ? *second : first;
-    engine.total.assign(scene.probes.size(), ShL2{});
-    engine.sampling.assign(scene.probes.size(), {});
-    if (options.keep_effects) engine.parts.assign(scene.probes.size(), {});
-    auto& costs = result.costs;
-    const auto cost = [&](Effect e) -> EffectCost& { return costs[static_cast<std::size_t>(e)]; };
-    const scene::SceneEffects& fx = scene.effects;
-    if (fx.direct)
-      if (IoStatus st = engine.direct(cost(Effect::Direct)); !st.ok()) return st;
-    if (fx.environment) {
-      const auto start = Clock::now();
-      const bool lookup = fx.sky_occlusion || fx.bounces > 0 || fx.emission;
-      if (IoStatus st = engine.environment.load(scene, lookup, threads); !st.ok()) return st;
-      cost(Effect::Environment).time_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-      engine.add_environment(cost(Effect::Environment));
-    }
-    const bool traces = fx.shadows || fx.sky_occlusion || fx.emission || fx.bounces > 0;
-    if (traces && !scene.geometry.empty()) {
-      if (!engine.tracer)  // built above for probe validity
-        if (IoStatus st = engine.build_tracer(result.geometry); !st.ok()) return st;
-      const auto sample_effects = [&] {
-        if (fx.shadows) engine.shadows(cost(Effect::Shadows));
-        if (fx.sky_occlusion) engine.sky_occlusion(cost(Effect::SkyOcclusion));
-        if (fx.emission) engine.emission(cost(Effect::Emission));
-        if (fx.bounces > 0) engine.bounce(cost(Effect::Bounce));
-      };
-      if (scene.settings.target_error_pct > 0) {  // the pilot (Engine::kPilotSamples)
-        engine.pilot = engine.total;
-        engine.piloting = true;
-        sample_effects();
-        engine.piloting = false;
-      }
-      sample_effects();
-    } else {
-      // No geometry: nothing to hide, emit or reflect; the effects cost nothing.
-      cost(Effect::Shadows).enabled = fx.shadows;
-      cost(Effect::SkyOcclusion).enabled = fx.sky_occlusion;
-      cost(Effect::Emission).enabled = fx.emission;
-      cost(Effect::Bounce).enabled = fx.bounces > 0;
-    }
-    result.radiance = std::move(engine.total);
-    result.sampling = std::move(engine.sampling);
-    result.effects = std::move(engine.parts);
+    if (IoStatus st = run_effects(second ? *second : first, result); !st.ok()) return st;
     dilate_invalid_probes(scene, result.validity, result.radiance, result.effects, result.sampling);
     measure_errors(result);
     result.validity_counts = count_validity(result.validity);
@@ -654,6 +800,41 @@ IoStatus bake(const scene::Scene& scene, const BakeOptions& options, BakeResult&
     return IoStatus::success();
   } catch (const std::exception& e) {
     return IoStatus::error(IoErrc::Core, scene.file, std::string("bake failed: ") + e.what());
+  }
+}
+
+IoStatus surface_validity(const scene::Scene& points, const BakeOptions& options, std::vector<ProbeValidity>& out,
+                          EffectCost& cost, GeometryCost& geometry) {
+  try {
+    out.assign(points.probes.size(), ProbeValidity{});
+    if (points.geometry.empty()) return IoStatus::success();
+    Engine engine(points, options, thread_count(options));
+    if (IoStatus st = engine.build_tracer(geometry); !st.ok()) return st;
+    run_pass(points.probes.size(), engine.threads, "validity", options, [&](std::size_t k, Counters& n) {
+      out[k] = check_probe(*engine.tracer, points, k, n.rays);
+      ++n.samples;
+    }, cost);
+    return IoStatus::success();
+  } catch (const std::exception& e) {
+    return IoStatus::error(IoErrc::Core, points.file, std::string("bake failed: ") + e.what());
+  }
+}
+
+IoStatus bake_surface_points(const scene::Scene& points, const std::vector<Vec3d>& normals,
+                             const std::function<std::string(std::size_t)>& label, const BakeOptions& options,
+                             BakeResult& out) {
+  try {
+    BakeResult result;
+    Engine engine(points, options, thread_count(options));
+    engine.normals = &normals;
+    engine.receiver_label = label;
+    if (IoStatus st = run_effects(engine, result); !st.ok()) return st;
+    result.validity.assign(points.probes.size(), ProbeValidity{});
+    measure_errors(result);
+    out = std::move(result);
+    return IoStatus::success();
+  } catch (const std::exception& e) {
+    return IoStatus::error(IoErrc::Core, points.file, std::string("bake failed: ") + e.what());
   }
 }
 

@@ -156,6 +156,22 @@ io::IoStatus bake_to_json(const scene::Scene& scene, const BakeResult& result, c
                      {"invalid_probes", policy_name(scene.settings.invalid_probes)}, {"invalid", vc.invalid},
                      {"moved", vc.moved}, {"dilated", vc.dilated}, {"time_ms", result.validity_cost.time_ms},
                      {"rays", result.validity_cost.rays}};
+    if (options.lightmaps) {
+      Json maps = Json::array();
+      for (std::size_t m = 0; m < options.lightmaps->maps.size(); ++m) {
+        const LightmapTexels& map = options.lightmaps->maps[m];
+        float worst = 0;
+        for (std::size_t t = 0; t < map.state.size(); ++t)
+          if (map.state[t] == TexelState::Baked) worst = std::max(worst, map.error_pct[t]);
+        const double seconds = options.lightmaps->time_ms / 1000.0;
+        maps.push_back({{"name", scene.lightmaps[m].name}, {"shape", scene.lightmaps[m].label},
+                        {"width", map.width}, {"height", map.height},
+                        {"sidecar", scene.lightmaps[m].name + ".lightmap.json"}, {"used", map.used},
+                        {"error_estimate_max_pct", worst},
+                        {"texels_per_s", seconds > 0 ? static_cast<double>(map.used) / seconds : 0.0}});
+      }
+      j["lightmaps"] = std::move(maps);
+    }
     // One probe per line inside the indented document. The only top-level "probes": null is
     // the placeholder ("scene" holds "probes" too, as a number).
     json = j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";

@@ -37,22 +37,22 @@ class MemoryStream : public Imf::OStream {
 
 }  // namespace
 
-IoStatus write_exr_rgb(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
-                       const std::vector<float>& rgb) {
-  if (width == 0 || height == 0 || rgb.size() != std::size_t{3} * width * height)
+IoStatus write_exr(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+                   const std::vector<std::string>& channels, const std::vector<float>& pixels) {
+  const std::size_t n = channels.size();
+  if (width == 0 || height == 0 || n == 0 || pixels.size() != n * width * height)
     return IoStatus::error(IoErrc::InvalidArgument, path, "the image's size does not match its pixels");
   MemoryStream stream;
   try {
     Imf::Header header(static_cast<int>(width), static_cast<int>(height));
     header.compression() = Imf::ZIP_COMPRESSION;
     Imf::FrameBuffer frame;
-    const char* names[3] = {"R", "G", "B"};
-    const std::size_t xs = 3 * sizeof(float), ys = xs * width;
-    for (int c = 0; c < 3; ++c) {
-      header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+    const std::size_t xs = n * sizeof(float), ys = xs * width;
+    for (std::size_t c = 0; c < n; ++c) {
+      header.channels().insert(channels[c], Imf::Channel(Imf::FLOAT));
       // OpenEXR's slices take a writable pointer even for output; it only reads through it.
-      char* base = const_cast<char*>(reinterpret_cast<const char*>(rgb.data() + c));
-      frame.insert(names[c], Imf::Slice(Imf::FLOAT, base, xs, ys));
+      char* base = const_cast<char*>(reinterpret_cast<const char*>(pixels.data() + c));
+      frame.insert(channels[c], Imf::Slice(Imf::FLOAT, base, xs, ys));
     }
     Imf::OutputFile file(stream, header);
     file.setFrameBuffer(frame);
@@ -61,6 +61,11 @@ IoStatus write_exr_rgb(const std::filesystem::path& path, std::uint32_t width, s
     return IoStatus::error(IoErrc::WriteFailed, path, std::string("OpenEXR: ") + e.what());
   }
   return write_file_atomically(path, stream.bytes());
+}
+
+IoStatus write_exr_rgb(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+                       const std::vector<float>& rgb) {
+  return write_exr(path, width, height, {"R", "G", "B"}, rgb);
 }
 
 }  // namespace shpack::io

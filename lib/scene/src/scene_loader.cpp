@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -34,6 +35,7 @@ using Json = nlohmann::json;
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr std::size_t kMaxProbes = 1'000'000;  // in a grid or a list
+constexpr std::uint64_t kMaxLightmapSide = 8192;   // texels, a lightmap's width or height
 // Arrays and objects nest at most this deep (a valid scene needs 4): deeper documents are
 // refused before they are parsed, because valijson recurses once per level (a 200 KB file of
 // 50,000 brackets overflows the stack).
@@ -92,6 +94,31 @@ bool nested_deeper_than(std::string_view text, int limit) {
 
 // ---- schema validation (scene_validate.h) ---------------------------------------------
 
+// The lightmaps' texels together against kMaxLightmapTexels, before anything is read or
+// allocated (the schema bounds each side; a 1e6 x 1e6 request is refused here too).
+void check_lightmap_budget(const Json& doc) {
+  const auto geometry = doc.find("geometry");
+  if (geometry == doc.end() || !geometry->is_array()) return;
+  std::uint64_t total = 0;
+  for (std::size_t k = 0; k < geometry->size(); ++k) {
+    const Json& g = (*geometry)[k];
+    if (!g.is_object() || !g.contains("lightmap") || !g.at("lightmap").is_object()) continue;
+    const Json& lm = g.at("lightmap");
+    if (!lm.contains("resolution") || !lm.at("resolution").is_array() || lm.at("resolution").size() != 2) continue;
+    const Json& r = lm.at("resolution");
+    if (!r[0].is_number_unsigned() || !r[1].is_number_unsigned()) continue;  // the schema's error
+    const std::uint64_t w = r[0].get<std::uint64_t>(), h = r[1].get<std::uint64_t>();
+    const std::string path = join(index("geometry", k), "lightmap.resolution");
+    if (w > kMaxLightmapSide || h > kMaxLightmapSide)
+      throw SceneError{path, std::to_string(w) + " x " + std::to_string(h) + " exceeds " +
+                                 std::to_string(kMaxLightmapSide) + " texels a side"};
+    total += w * h;
+    if (total > kMaxLightmapTexels)
+      throw SceneError{path, "the lightmaps hold more than " + std::to_string(kMaxLightmapTexels) +
+                                 " texels together (" + std::to_string(total) + " so far)"};
+  }
+}
+
 // What valijson cannot check, or only slowly: run before it, on the parsed document.
 //  - settings.seed, 0 to 2^64 - 1: valijson reads integers as int64, so a seed >= 2^63 would
 //    fail the schema's "minimum": 0. Checked and taken out here, put back by the caller's
@@ -104,6 +131,7 @@ void check_before_validation(Json& doc, std::optional<std::uint64_t>& seed) {
   if (const auto effects = doc.find("effects");
       effects != doc.end() && effects->is_array() && effects->size() > kMaxEffects)
     throw SceneError{"effects", "more than " + std::to_string(kMaxEffects) + " effects"};
+  check_lightmap_budget(doc);
   const auto settings = doc.find("settings");
   if (settings == doc.end() || !settings->is_object()) return;
   const auto s = settings->find("seed");
@@ -353,6 +381,7 @@ std::vector<SceneShape> read_mesh(const SceneShape& entry, const Json& j, const 
     return SceneError{join(path, "path"), file.string() + ": " + problem};
   };
   std::vector<SceneShape> shapes;
+  const bool lightmapped = j.contains("lightmap");
   if (ext == ".obj") {
     std::string text;
     if (IoStatus st = detail::read_bounded(file, detail::FileKind::Regular, detail::kMaxMeshBytes, text); !st.ok())
@@ -360,6 +389,7 @@ std::vector<SceneShape> read_mesh(const SceneShape& entry, const Json& j, const 
     detail::ObjMesh mesh;
     std::string why;
     if (!detail::parse_obj(text, kMaxCoordinate, mesh, why)) throw mesh_error(why);
+    if (lightmapped) throw mesh_error("lightmap UVs of meshes are not read yet");
     shapes.push_back(entry);
     place_mesh(shapes.back(), mesh.vertices, std::move(mesh.indices), j, path, value_or(j, "mirror_z", false),
                mesh_error);
@@ -375,6 +405,7 @@ std::vector<SceneShape> read_mesh(const SceneShape& entry, const Json& j, const 
     throw mesh_error(e.what());
   }
   if (mesh.indices.empty()) throw mesh_error("no triangles");
+  if (lightmapped) throw mesh_error("lightmap UVs of meshes are not read yet");
   const bool right_handed = value_or(j, "mirror_z", true);
   std::vector<detail::MeshPart> parts = detail::split_by_material(mesh);
   for (detail::MeshPart& part : parts) {
@@ -389,6 +420,25 @@ std::vector<SceneShape> read_mesh(const SceneShape& entry, const Json& j, const 
     shapes.push_back(std::move(shape));
   }
   return shapes;
+}
+
+// The lightmap of geometry entry k, whose shapes are geometry[first, end) (ranges checked by
+// the schema, the budget by check_lightmap_budget).
+LightmapTarget read_lightmap(const Json& entry, std::size_t k, std::size_t first, std::size_t end) {
+  const Json& lm = entry.at("lightmap");
+  LightmapTarget target;
+  target.label = label(index("geometry", k), entry);
+  // The name is the stem of the lightmap's files: kept to letters, digits, '-' and '_', so that
+  // no name can reach out of the output folder or hide a file.
+  target.name = entry.contains("name") ? entry.at("name").get<std::string>() : "geometry" + std::to_string(k);
+  for (char& c : target.name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+  target.width = lm.at("resolution")[0].get<std::uint32_t>();
+  target.height = lm.at("resolution")[1].get<std::uint32_t>();
+  target.l2 = value_or(lm, "l2", false);
+  target.padding = value_or(lm, "padding", target.padding);
+  for (std::size_t s = first; s < end; ++s) target.shapes.push_back(static_cast<std::uint32_t>(s));
+  return target;
 }
 
 // The shape of one "geometry" entry: one, or one per material of a glTF mesh.
@@ -406,6 +456,7 @@ std::vector<SceneShape> read_shape(const Json& j, const std::string& path, const
     const double w = number(j.at("size")[0], join(path, "size[0]")), h = number(j.at("size")[1], join(path, "size[1]"));
     add_quad(shape, geometry_point(j.at("position"), join(path, "position")), u, v, 0.5 * w, 0.5 * h,
              join(path, "size"), std::max(w, h));
+    if (j.contains("lightmap")) shape.uv = {0, 0, 1, 0, 1, 1, 0, 1};  // u along right, v along up (add_quad's corners)
   } else if (type == "sphere") {
     shape.type = ShapeType::Sphere;
     shape.centre = geometry_point(j.at("position"), join(path, "position"));
@@ -478,15 +529,26 @@ void read_validity_settings(const Json& s, SceneSettings& settings) {
 Scene read_scene(const Json& doc, const fs::path& file, std::optional<std::uint64_t> seed) {
   Scene scene;
   scene.file = file;
-  scene.probes = read_probes(doc.at("probes"));
+  if (doc.contains("probes")) scene.probes = read_probes(doc.at("probes"));
   if (doc.contains("environment")) scene.environment = read_environment(doc.at("environment"), file);
   if (doc.contains("lights"))
     for (std::size_t k = 0; k < doc.at("lights").size(); ++k)
       scene.lights.push_back(read_light(doc.at("lights")[k], index("lights", k)));
   if (doc.contains("geometry"))
-    for (std::size_t k = 0; k < doc.at("geometry").size(); ++k)
-      for (SceneShape& shape : read_shape(doc.at("geometry")[k], index("geometry", k), file))
-        scene.geometry.push_back(std::move(shape));
+    for (std::size_t k = 0; k < doc.at("geometry").size(); ++k) {
+      const Json& entry = doc.at("geometry")[k];
+      const std::size_t first = scene.geometry.size();
+      for (SceneShape& shape : read_shape(entry, index("geometry", k), file)) scene.geometry.push_back(std::move(shape));
+      if (!entry.contains("lightmap")) continue;
+      scene.lightmaps.push_back(read_lightmap(entry, k, first, scene.geometry.size()));
+      for (std::size_t m = 0; m + 1 < scene.lightmaps.size(); ++m)
+        if (scene.lightmaps[m].name == scene.lightmaps.back().name)
+          throw SceneError{join(index("geometry", k), "name"), "'" + scene.lightmaps.back().name +
+                                                                   "' names another lightmap already (" +
+                                                                   scene.lightmaps[m].label + "): names are file stems"};
+    }
+  if (scene.probes.empty() && scene.lightmaps.empty())
+    throw SceneError{"probes", "a scene needs probes or a lightmap"};
   scene.effects = read_effects(doc.at("effects"), doc.contains("environment"));
   if (doc.contains("settings")) {
     const Json& s = doc.at("settings");

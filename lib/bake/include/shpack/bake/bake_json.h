@@ -17,6 +17,7 @@
 #include <string>
 
 #include "shpack/bake/bake.h"
+#include "shpack/bake/lightmap_bake.h"
 #include "shpack/io/io_status.h"
 #include "shpack/scene/scene.h"
 #include "shpack/window.h"
@@ -28,6 +29,9 @@ enum class BakeFormat : std::uint8_t { Full, UnityProbes };
 struct BakeJsonOptions {
   BakeFormat format = BakeFormat::Full;
   Window window;  // deringing per probe, as `shpack convert --window`
+  // The scene's lightmaps, when it has any: Full lists each ("lightmaps": name, size, its
+  // sidecar file, texels, worst error estimate, texels/s); their data are in their own files.
+  const LightmapBakeResult* lightmaps = nullptr;
 };
 
 // Fails (naming the scene file and the probe) when a probe's coefficients do not fit in

@@ -5,11 +5,17 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "shpack/io/io_status.h"
 
 namespace shpack::io {
+
+// A float image of any channels, named as `channels` ("R", "G", "B", "A"), interleaved in
+// `pixels` (width x height x channels.size() floats, row 0 at the top): lightmaps.
+IoStatus write_exr(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+                   const std::vector<std::string>& channels, const std::vector<float>& pixels);
 
 // `rgb` holds width x height packed RGB floats, row 0 at the top. Errors: InvalidArgument for a
 // size that does not match, WriteFailed (OpenEXR's or the file's problem), naming the file.

@@ -66,6 +66,24 @@ struct SceneShape {
   // Plane, box and mesh, as triangles: xyz per vertex, three indices per triangle.
   std::vector<float> vertices;
   std::vector<std::uint32_t> indices;
+  // The lightmap UVs (u, v per vertex, Unity's convention: (0, 0) the image's bottom left),
+  // when a lightmap is asked for on this shape; empty otherwise.
+  std::vector<float> uv;
+};
+
+// The most texels all of a scene's lightmaps may hold together, checked before any is
+// allocated (each costs about 3 KB while it bakes).
+inline constexpr std::uint64_t kMaxLightmapTexels = std::uint64_t{1} << 20;
+
+// A lightmap asked for on one geometry entry (docs/lightmaps.md): every shape the entry became
+// (a glTF mesh: one per material) shares its texels.
+struct LightmapTarget {
+  std::string name;                   // the entry's name, or "geometry[2]": the files' stem
+  std::string label;                  // "geometry[2] 'floor'", for messages
+  std::uint32_t width = 0, height = 0;
+  bool l2 = false;                    // also the L2 coefficients (else L1)
+  std::uint32_t padding = 2;          // texels of dilation around each chart
+  std::vector<std::uint32_t> shapes;  // indices into Scene::geometry
 };
 
 struct SceneEffects {
@@ -108,6 +126,7 @@ struct Scene {
   SceneEnvironment environment;
   std::vector<SceneLight> lights;
   std::vector<SceneShape> geometry;
+  std::vector<LightmapTarget> lightmaps;
   SceneEffects effects;
   SceneSettings settings;
 };

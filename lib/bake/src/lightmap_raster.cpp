@@ -1,0 +1,241 @@
+#include "lightmap_raster.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <numeric>
+#include <unordered_map>
+
+namespace shpack::bake {
+namespace {
+
+struct Triangle {
+  std::array<Vec3, 3> p;
+  std::array<std::array<double, 2>, 3> t;  // texel space
+  Vec3 normal;
+  std::uint32_t shape = 0;
+};
+
+// Union-find with path halving.
+struct Charts {
+  std::vector<std::int32_t> parent;
+  std::int32_t find(std::int32_t a) {
+    while (parent[a] != a) a = parent[a] = parent[parent[a]];
+    return a;
+  }
+  void join(std::int32_t a, std::int32_t b) { parent[find(a)] = find(b); }
+};
+
+struct VertexKey {
+  std::array<std::uint32_t, 5> bits;
+  bool operator==(const VertexKey&) const = default;
+};
+struct VertexHash {
+  std::size_t operator()(const VertexKey& k) const noexcept {
+    std::uint64_t h = 1469598103934665603ull;
+    for (const std::uint32_t b : k.bits) h = (h ^ b) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+std::string uv_text(double u, double v) {
+  std::string text("(");  // built by appends: GCC 12 misreads "(" + std::string as overlapping (-Wrestrict)
+  text.append(std::to_string(u)).append(", ").append(std::to_string(v)).append(")");
+  return text;
+}
+
+using Polygon = std::vector<std::array<double, 2>>;
+
+// Sutherland-Hodgman: the part of `in` with coordinate `axis` on the `keep_below` side of `at`.
+Polygon clip(const Polygon& in, int axis, double at, bool keep_below) {
+  Polygon out;
+  const auto inside = [&](const std::array<double, 2>& q) { return keep_below ? q[axis] <= at : q[axis] >= at; };
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const auto& a = in[i];
+    const auto& b = in[(i + 1) % in.size()];
+    const bool ia = inside(a), ib = inside(b);
+    if (ia) out.push_back(a);
+    if (ia != ib) {
+      const double s = (at - a[axis]) / (b[axis] - a[axis]);
+      out.push_back({a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])});
+    }
+  }
+  return out;
+}
+
+// Area and centroid of a simple polygon (the shoelace formula).
+double polygon_area(const Polygon& q, std::array<double, 2>& centroid) {
+  double a = 0, cx = 0, cy = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const auto& p0 = q[i];
+    const auto& p1 = q[(i + 1) % q.size()];
+    const double cr = p0[0] * p1[1] - p1[0] * p0[1];
+    a += cr;
+    cx += (p0[0] + p1[0]) * cr;
+    cy += (p0[1] + p1[1]) * cr;
+  }
+  if (std::fabs(a) > 0) centroid = {cx / (3.0 * a), cy / (3.0 * a)};
+  return 0.5 * std::fabs(a);
+}
+
+// Barycentrics of x in the triangle's texel-space corners.
+std::array<double, 3> barycentric(const Triangle& tri, double x, double y) {
+  const auto& a = tri.t[0];
+  const auto& b = tri.t[1];
+  const auto& c = tri.t[2];
+  const double det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+  const double l1 = ((x - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (y - a[1])) / det;
+  const double l2 = ((b[0] - a[0]) * (y - a[1]) - (x - a[0]) * (b[1] - a[1])) / det;
+  return {1.0 - l1 - l2, l1, l2};
+}
+
+TexelPoint point_at(const Triangle& tri, const std::array<double, 3>& b) {
+  return {b[0] * tri.p[0] + b[1] * tri.p[1] + b[2] * tri.p[2], tri.normal};
+}
+
+struct SubsampleOwner {
+  std::int32_t triangle = -1;
+  bool strict = false;
+  TexelPoint point;
+};
+
+struct Fallback {
+  double area = 0;
+  std::int32_t chart = -1;
+  TexelPoint point;
+};
+
+}  // namespace
+
+bool rasterize_lightmap(const scene::LightmapTarget& target, const std::vector<scene::SceneShape>& geometry,
+                        LightmapRaster& out, std::string& error) {
+  const std::uint32_t W = target.width, H = target.height;
+  // The triangles, in texel space, with their charts.
+  std::vector<Triangle> tris;
+  std::vector<std::int32_t> vertex_of_corner;
+  std::unordered_map<VertexKey, std::int32_t, VertexHash> welded;
+  std::uint64_t degenerate = 0;
+  for (const std::uint32_t s : target.shapes) {
+    const scene::SceneShape& shape = geometry[s];
+    const std::vector<float>& v = shape.vertices;
+    const std::vector<float>& uv = shape.uv;
+    for (std::size_t k = 0; 2 * k + 1 < uv.size(); ++k) {
+      const float u = uv[2 * k], w = uv[2 * k + 1];
+      if (!(u >= 0 && u <= 1 && w >= 0 && w <= 1)) {
+        error = shape.label + ": vertex " + std::to_string(k) + "'s lightmap UV " + uv_text(u, w) +
+                " is outside [0, 1]";
+        return false;
+      }
+    }
+    for (std::size_t t = 0; t + 2 < shape.indices.size(); t += 3) {
+      Triangle tri;
+      tri.shape = s;
+      std::array<std::int32_t, 3> ids{};
+      for (int c = 0; c < 3; ++c) {
+        const std::uint32_t i = shape.indices[t + c];
+        tri.p[c] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+        tri.t[c] = {uv[2 * i] * static_cast<double>(W), (1.0 - uv[2 * i + 1]) * static_cast<double>(H)};
+        const VertexKey key{{std::bit_cast<std::uint32_t>(v[3 * i]), std::bit_cast<std::uint32_t>(v[3 * i + 1]),
+                             std::bit_cast<std::uint32_t>(v[3 * i + 2]), std::bit_cast<std::uint32_t>(uv[2 * i]),
+                             std::bit_cast<std::uint32_t>(uv[2 * i + 1])}};
+        ids[c] = welded.emplace(key, static_cast<std::int32_t>(welded.size())).first->second;
+      }
+      const Vec3 n = cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]);
+      const double len = std::sqrt(dot(n, n));
+      const double uv_area = std::fabs((tri.t[1][0] - tri.t[0][0]) * (tri.t[2][1] - tri.t[0][1]) -
+                                       (tri.t[2][0] - tri.t[0][0]) * (tri.t[1][1] - tri.t[0][1]));
+      if (!(len > 0) || !(uv_area > 1e-12)) {
+        ++degenerate;
+        continue;
+      }
+      tri.normal = (1.0 / len) * n;
+      tris.push_back(tri);
+      vertex_of_corner.insert(vertex_of_corner.end(), ids.begin(), ids.end());
+    }
+  }
+  // Charts: triangles joined through their welded vertices.
+  Charts charts;
+  charts.parent.resize(welded.size());
+  std::iota(charts.parent.begin(), charts.parent.end(), 0);
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    charts.join(vertex_of_corner[3 * t], vertex_of_corner[3 * t + 1]);
+    charts.join(vertex_of_corner[3 * t], vertex_of_corner[3 * t + 2]);
+  }
+  const auto chart_of = [&](std::size_t t) { return charts.find(vertex_of_corner[3 * t]); };
+
+  const std::size_t texels = static_cast<std::size_t>(W) * H;
+  constexpr int kSub = kSubsamples * kSubsamples;
+  std::vector<SubsampleOwner> owners(texels * kSub);
+  std::vector<Fallback> fallback(texels);
+  out.width = W;
+  out.height = H;
+  out.coverage.assign(texels, 0.0f);
+  std::vector<double> coverage(texels, 0.0);
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    const Triangle& tri = tris[t];
+    const std::int32_t chart = chart_of(t);
+    double x0 = tri.t[0][0], x1 = x0, y0 = tri.t[0][1], y1 = y0;
+    for (const auto& c : tri.t) {
+      x0 = std::min(x0, c[0]);
+      x1 = std::max(x1, c[0]);
+      y0 = std::min(y0, c[1]);
+      y1 = std::max(y1, c[1]);
+    }
+    const auto lo = [](double a) { return static_cast<std::uint32_t>(std::max(0.0, std::floor(a))); };
+    const std::uint32_t i0 = lo(x0), j0 = lo(y0);
+    const std::uint32_t i1 = std::min(W - 1, static_cast<std::uint32_t>(std::floor(x1)));
+    const std::uint32_t j1 = std::min(H - 1, static_cast<std::uint32_t>(std::floor(y1)));
+    for (std::uint32_t j = j0; j <= j1; ++j)
+      for (std::uint32_t i = i0; i <= i1; ++i) {
+        Polygon q{tri.t[0], tri.t[1], tri.t[2]};
+        q = clip(clip(clip(clip(q, 0, i, false), 0, i + 1.0, true), 1, j, false), 1, j + 1.0, true);
+        if (q.size() < 3) continue;
+        std::array<double, 2> centroid{};
+        const double area = polygon_area(q, centroid);
+        if (!(area > 0)) continue;
+        const std::size_t texel = static_cast<std::size_t>(j) * W + i;
+        coverage[texel] += area;
+        if (area > fallback[texel].area)
+          fallback[texel] = {area, chart, point_at(tri, barycentric(tri, centroid[0], centroid[1]))};
+        for (int s = 0; s < kSub; ++s) {
+          const double x = i + (s % kSubsamples + 0.5) / kSubsamples, y = j + (s / kSubsamples + 0.5) / kSubsamples;
+          const std::array<double, 3> b = barycentric(tri, x, y);
+          constexpr double kEdge = 1e-12;
+          if (!(b[0] >= -kEdge && b[1] >= -kEdge && b[2] >= -kEdge)) continue;
+          const bool strict = b[0] > kEdge && b[1] > kEdge && b[2] > kEdge;
+          SubsampleOwner& o = owners[texel * kSub + s];
+          if (o.triangle >= 0) {
+            if (strict && o.strict && chart_of(static_cast<std::size_t>(o.triangle)) != chart) {
+              error = geometry[tri.shape].label + ": its lightmap UVs overlap another chart at texel (" +
+                      std::to_string(i) + ", " + std::to_string(j) + ") of " + target.label + "'s lightmap";
+              return false;
+            }
+            continue;
+          }
+          o = {static_cast<std::int32_t>(t), strict, point_at(tri, b)};
+        }
+      }
+  }
+  out.chart.assign(texels, -1);
+  out.first.assign(texels + 1, 0);
+  out.points.clear();
+  for (std::size_t texel = 0; texel < texels; ++texel) {
+    out.first[texel] = static_cast<std::uint32_t>(out.points.size());
+    if (!(coverage[texel] > 0)) continue;
+    out.coverage[texel] = static_cast<float>(std::min(1.0, coverage[texel]));
+    out.chart[texel] = fallback[texel].chart;
+    for (int s = 0; s < kSub; ++s)
+      if (owners[texel * kSub + s].triangle >= 0) out.points.push_back(owners[texel * kSub + s].point);
+    if (out.points.size() == out.first[texel]) out.points.push_back(fallback[texel].point);
+  }
+  out.first[texels] = static_cast<std::uint32_t>(out.points.size());
+  out.degenerate = degenerate;
+  if (out.points.empty()) {
+    error = target.label + ": no triangle with area covers a texel of its lightmap";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace shpack::bake

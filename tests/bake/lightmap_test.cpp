@@ -1,0 +1,235 @@
+// Tests of SH lightmaps (lightmap_bake.h) against closed forms: a plane under a uniform sky,
+// a plane under a sun with a box's umbra, a furnace; determinism; bad requests.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "bake_support.h"
+#include "lightmap_raster.h"
+#include "scene/scene_files.h"
+#include "shpack/bake/lightmap_bake.h"
+#include "shpack/bake/lightmap_output.h"
+#include "shpack/scene/scene_loader.h"
+#include "surface_domain.h"
+
+namespace shpack::bake {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct Lightmapped {
+  scene::Scene scene;
+  io::IoStatus status = io::IoStatus::success();
+  LightmapBakeResult result;
+};
+
+Lightmapped bake_lightmap_scene(const std::string& name, const std::string& json, unsigned threads = 2) {
+  Lightmapped b;
+  b.status = scene::load_scene(shpack_test::write_scene(name + ".json", json), b.scene);
+  if (!b.status.ok()) return b;
+  BakeOptions options;
+  options.threads = threads;
+  b.status = bake_lightmaps(b.scene, options, b.result);
+  return b;
+}
+
+// The SH of a radiance L over the hemisphere about n (zero below): by the Funk-Hecke theorem,
+// int H(n.w) Y_lm(w) dw = lambda_l Y_lm(n), lambda_l = 2 pi int_0^1 P_l(t) dt: 2 pi, pi, 0.
+ShL2 uniform_hemisphere(double radiance, const Vec3& n) {
+  const std::array<double, kShCount> y = eval_basis(n.x, n.y, n.z);
+  ShL2 out;
+  for (int c = 0; c < kChannelCount; ++c)
+    for (int i = 0; i < kShCount; ++i) out.c[c][i] = radiance * (i == 0 ? 2 * kPi : i < 4 ? kPi : 0.0) * y[i];
+  return out;
+}
+
+// A floor plane facing +Y (right x up = +Y in Unity's frame), 4 m a side, with a lightmap.
+std::string floor_plane(int resolution, const std::string& extra = "") {
+  return R"({"type": "plane", "name": "floor", "position": [0, 0, 0], "right": [0, 0, 1], "up": [1, 0, 0],
+             "size": [4, 4], "albedo": 0.5, "lightmap": {"resolution": [)" +
+         std::to_string(resolution) + ", " + std::to_string(resolution) + "]" + extra + "}}";
+}
+
+TEST(LightmapHemisphere, GramMatrixIsExactForTheHemisphere) {
+  // M(n) c for a constant radiance is the Funk-Hecke result above, for any normal.
+  for (const Vec3 n : {Vec3{0, 1, 0}, Vec3{0.6, 0, 0.8}, Vec3{-0.48, 0.6, -0.64}}) {
+    ShL2 constant;
+    for (auto& ch : constant.c) ch[0] = 1.0 / kY0;  // radiance 1: c_0 = 1 / Y_0 = sqrt(4 pi)
+    const ShL2 got = hemisphere_part(hemisphere_gram(n), constant);
+    const ShL2 want = uniform_hemisphere(constant.c[0][0] * kY0, n);
+    for (int i = 0; i < kShCount; ++i) EXPECT_NEAR(got.c[0][i], want.c[0][i], 1e-13) << i;
+  }
+  // M is a projection onto functions on the hemisphere: M + M(-n) = I (the two halves).
+  const Vec3 n{0.36, 0.48, 0.8};
+  const ShMatrix a = hemisphere_gram(n), b = hemisphere_gram(-1.0 * n);
+  for (int i = 0; i < kShCount; ++i)
+    for (int j = 0; j < kShCount; ++j) EXPECT_NEAR(a[i][j] + b[i][j], i == j ? 1.0 : 0.0, 1e-14) << i << "," << j;
+}
+
+TEST(Lightmap, PlaneUnderAUniformSkyIsExact) {
+  // A uniform environment (gradient with equal colours) is band-limited, so the hemisphere's
+  // SH is M(n) c exactly and the residual is 0 at every sample: each texel is the closed form
+  // to rounding (relative 1e-12 over a few hundred terms of 1e-16).
+  const Lightmapped b = bake_lightmap_scene("uniform_sky", R"({
+    "environment": {"type": "gradient", "zenith": 0.7, "horizon": 0.7, "ground": 0.7},
+    "geometry": [)" + floor_plane(4) + R"(],
+    "effects": ["environment"]})");
+  ASSERT_TRUE(b.status.ok()) << b.status.message;
+  ASSERT_EQ(b.result.maps.size(), 1u);
+  const LightmapTexels& map = b.result.maps[0];
+  EXPECT_EQ(map.used, 16u);
+  EXPECT_EQ(map.points, 64u);  // 2 x 2 points per fully covered texel
+  const ShL2 want = uniform_hemisphere(0.7, {0, 1, 0});
+  for (std::size_t t = 0; t < 16; ++t) {
+    EXPECT_EQ(map.state[t], TexelState::Baked);
+    EXPECT_FLOAT_EQ(map.coverage[t], 1.0f);
+    for (int c = 0; c < kChannelCount; ++c)
+      for (int i = 0; i < kShCount; ++i) EXPECT_NEAR(map.radiance[t].c[c][i], want.c[c][i], 1e-12) << t << " " << i;
+  }
+}
+
+TEST(Lightmap, SunAndBoxCastAnExactUmbra) {
+  // A delta sun straight down over a box floating above the floor: texels wholly under the
+  // box's 1 x 1 m footprint get nothing, the others the sun's closed form E Y_i(up); the box's
+  // edges lie on texel edges (8 texels over 4 m), so no texel is partly lit. A delta light
+  // takes one shadow ray per point, exact either way.
+  const Lightmapped b = bake_lightmap_scene("sun_box", R"({
+    "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 2}],
+    "geometry": [)" + floor_plane(8) + R"(,
+      {"type": "box", "min": [-0.5, 0.5, -0.5], "max": [0.5, 1, 0.5], "albedo": 0.5}],
+    "effects": ["direct", "shadows"]})");
+  ASSERT_TRUE(b.status.ok()) << b.status.message;
+  const LightmapTexels& map = b.result.maps[0];
+  const std::array<double, kShCount> y = eval_basis(0, 1, 0);
+  // Texel (i, j): x runs along the plane's up (+X) with u, z along right (+Z) with v... the
+  // texel's centre decides: the box covers |x|, |z| < 0.5, i.e. the middle 2 x 2 texels.
+  std::size_t dark = 0;
+  for (std::size_t t = 0; t < 64; ++t) {
+    const bool lit = map.radiance[t].c[0][0] != 0;
+    if (!lit) {
+      ++dark;
+      for (int i = 0; i < kShCount; ++i) EXPECT_EQ(map.radiance[t].c[1][i], 0.0);
+      const std::size_t i = t % 8, j = t / 8;
+      EXPECT_TRUE(i >= 3 && i <= 4 && j >= 3 && j <= 4) << i << "," << j;
+    } else {
+      for (int i = 0; i < kShCount; ++i) EXPECT_NEAR(map.radiance[t].c[2][i], 2 * y[i], 1e-12);
+    }
+  }
+  EXPECT_EQ(dark, 4u);
+}
+
+TEST(Lightmap, FurnaceConvergesToTheAnalyticValue) {
+  // A closed box whose walls, and the lightmapped plane inside it, all emit Le and reflect
+  // albedo a: after N bounces the radiance leaving every surface is Le (1 + a + ... + a^N),
+  // uniform, so the plane's upper hemisphere sees that everywhere (uniform_hemisphere).
+  // The Monte Carlo error is bounded by the bake's own estimate (about 95 % confidence); the
+  // worst of 16 texels is held to twice the worst estimate.
+  const double le = 0.5, a = 0.6;
+  const Lightmapped b = bake_lightmap_scene("furnace", R"({
+    "geometry": [
+      {"type": "box", "min": [-3, -1, -3], "max": [3, 3, 3], "albedo": 0.6, "emission": 0.5},
+      {"type": "plane", "name": "floor", "position": [0, 0, 0], "right": [0, 0, 1], "up": [1, 0, 0],
+       "size": [2, 2], "albedo": 0.6, "emission": 0.5, "lightmap": {"resolution": [4, 4]}}],
+    "effects": ["emission", "bounce:3"],
+    "settings": {"target_error_pct": 2, "max_samples": 16384}})");
+  ASSERT_TRUE(b.status.ok()) << b.status.message;
+  const LightmapTexels& map = b.result.maps[0];
+  const ShL2 want = uniform_hemisphere(le * (1 + a + a * a + a * a * a), {0, 1, 0});
+  double worst = 0, worst_estimate = 0;
+  for (std::size_t t = 0; t < 16; ++t) {
+    worst = std::max(worst, shpack_test::max_error_pct(map.radiance[t], want));
+    worst_estimate = std::max(worst_estimate, static_cast<double>(map.error_pct[t]));
+  }
+  EXPECT_GT(worst_estimate, 0.0);
+  EXPECT_LE(worst, 2 * worst_estimate);
+}
+
+TEST(Lightmap, SameResultForAnyThreadCount) {
+  const std::string json = R"({
+    "environment": {"type": "gradient", "zenith": [0.2, 0.4, 1.0], "horizon": [0.8, 0.9, 1.0], "ground": 0.1},
+    "lights": [{"type": "sphere", "position": [0, 2, 0], "radius": 0.3, "power": 50}],
+    "geometry": [)" + floor_plane(6, R"(, "l2": true)") + R"(,
+      {"type": "box", "min": [-0.5, 0.5, -0.5], "max": [0.5, 1, 0.5], "albedo": 0.5}],
+    "effects": ["direct", "shadows", "environment", "sky_occlusion", "bounce:1"],
+    "settings": {"target_error_pct": 0, "sky_samples": 128, "bounce_samples": 64, "shadow_samples": 64}})";
+  const Lightmapped one = bake_lightmap_scene("threads_1", json, 1);
+  const Lightmapped two = bake_lightmap_scene("threads_2", json, 2);
+  ASSERT_TRUE(one.status.ok()) << one.status.message;
+  ASSERT_TRUE(two.status.ok()) << two.status.message;
+  for (std::size_t t = 0; t < one.result.maps[0].radiance.size(); ++t)
+    EXPECT_EQ(one.result.maps[0].radiance[t], two.result.maps[0].radiance[t]) << t;
+}
+
+TEST(Lightmap, UnusedTexelsAreMarkedAndChartsPadded) {
+  // One triangle over the lower-left half of an 8 x 8 map: texels above the diagonal are
+  // unused, except those padding reaches (2 rings); none is black-and-used.
+  scene::SceneShape tri;
+  tri.label = "geometry[0]";
+  tri.vertices = {0, 0, 0, 1, 0, 0, 0, 0, 1};
+  tri.indices = {0, 1, 2};
+  tri.uv = {0, 0, 1, 0, 0, 1};
+  scene::LightmapTarget target;
+  target.label = "geometry[0]";
+  target.width = target.height = 8;
+  target.shapes = {0};
+  LightmapRaster raster;
+  std::string error;
+  ASSERT_TRUE(rasterize_lightmap(target, {tri}, raster, error)) << error;
+  double covered = 0;
+  for (const float c : raster.coverage) covered += c;
+  EXPECT_NEAR(covered, 32.0, 1e-5);  // half of 64 texels, exactly (clipped areas)
+  // Row 0 is the top (v = 1): its only used texel is the leftmost, which the diagonal halves.
+  EXPECT_NEAR(raster.coverage[0], 0.5, 1e-6);
+  EXPECT_EQ(raster.chart[7], -1);
+}
+
+TEST(Lightmap, OverlappingChartsAndBadUvsAreRefused) {
+  scene::SceneShape two;
+  two.label = "geometry[0] 'quad'";
+  two.vertices = {0, 0, 0, 1, 0, 0, 0, 0, 1, 5, 0, 0, 6, 0, 0, 5, 0, 1};
+  two.indices = {0, 1, 2, 3, 4, 5};
+  two.uv = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};  // the second triangle reuses the first's UVs
+  scene::LightmapTarget target;
+  target.label = "geometry[0] 'quad'";
+  target.width = target.height = 4;
+  target.shapes = {0};
+  LightmapRaster raster;
+  std::string error;
+  EXPECT_FALSE(rasterize_lightmap(target, {two}, raster, error));
+  EXPECT_NE(error.find("overlap"), std::string::npos) << error;
+  two.uv[0] = 1.5f;
+  EXPECT_FALSE(rasterize_lightmap(target, {two}, raster, error));
+  EXPECT_NE(error.find("outside [0, 1]"), std::string::npos) << error;
+}
+
+TEST(Lightmap, HugeResolutionIsRefusedBeforeAllocation) {
+  scene::Scene scene;
+  const io::IoStatus st = scene::load_scene(shpack_test::write_scene("huge.json", R"({
+    "environment": {"type": "gradient", "zenith": 1, "horizon": 1, "ground": 1},
+    "geometry": [{"type": "plane", "position": [0, 0, 0], "right": [0, 0, 1], "up": [1, 0, 0], "size": [1, 1],
+                  "lightmap": {"resolution": [1000000, 1000000]}}],
+    "effects": ["environment"]})"), scene);
+  EXPECT_FALSE(st.ok());
+  EXPECT_NE(st.message.find("texels a side"), std::string::npos) << st.message;
+}
+
+TEST(Lightmap, ImagesPackTheProbesShaderVectors) {
+  const Lightmapped b = bake_lightmap_scene("images", R"({
+    "environment": {"type": "gradient", "zenith": 0.7, "horizon": 0.7, "ground": 0.7},
+    "geometry": [)" + floor_plane(2) + R"(],
+    "effects": ["environment"]})");
+  ASSERT_TRUE(b.status.ok()) << b.status.message;
+  std::vector<LightmapImage> images;
+  std::string error;
+  ASSERT_TRUE(lightmap_images(b.scene.lightmaps[0], b.result.maps[0], images, error)) << error;
+  ASSERT_EQ(images.size(), 4u);  // SHAr, SHAg, SHAb, texels
+  // E/pi at the normal, from SHAr: dot(SHAr, (n, 1)). For a uniform L over the upper
+  // hemisphere, E(up) = pi L, so E/pi = L = 0.7 (float rounding of the packing: 1e-6).
+  const std::vector<float>& a = images[0].pixels;
+  EXPECT_NEAR(a[1] + a[3], 0.7, 1e-6);
+}
+
+}  // namespace
+}  // namespace shpack::bake
