@@ -15,6 +15,7 @@
 #include "shpack/io/atomic_write.h"
 #include "shpack/io/image_file.h"
 #include "shpack/io/json_reader.h"
+#include "shpack/io/lightmap_preview.h"
 #include "shpack/io/preview.h"
 #include "shpack/io/sha256.h"
 #include "shpack/io/stdin_spool.h"
@@ -74,6 +75,19 @@ int run_preview(const PreviewOptions& options) {
   if (options.document == "-" && options.input == "-") {
     report_usage_error("preview", "preview: the document and --input cannot both be stdin");
     return kExitUsage;
+  }
+  // A lightmap's sidecar (docs/lightmaps.md): its texels as pictures.
+  if (options.document.size() > 14 && options.document.ends_with(".lightmap.json")) {
+    io::Rgb8Image image;
+    if (io::IoStatus st = io::render_lightmap_preview(options.document, options.size, image); !st.ok()) {
+      report_error(st.message);
+      return kExitFailure;
+    }
+    if (io::IoStatus st = io::write_png(output, image); !st.ok()) {
+      report_error(st.message);
+      return kExitFailure;
+    }
+    return kExitOk;
   }
   io::ShJsonContent content;
   if (io::IoStatus st = io::read_sh_json(options.document, content, options.probe); !st.ok()) {
