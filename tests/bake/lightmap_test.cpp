@@ -11,6 +11,7 @@
 #include "scene/scene_files.h"
 #include "shpack/bake/lightmap_bake.h"
 #include "shpack/bake/lightmap_output.h"
+#include "shpack/lights.h"
 #include "shpack/scene/scene_loader.h"
 #include "surface_domain.h"
 
@@ -118,6 +119,63 @@ TEST(Lightmap, SunAndBoxCastAnExactUmbra) {
     }
   }
   EXPECT_EQ(dark, 4u);
+}
+
+TEST(Lightmap, SunPenumbraUnderABoxEdgeIsHalf) {
+  // A sun of 10 degrees straight down over a box long in z whose side x = 0.5 rises from 0.5 to
+  // 1 m: from a floor point with x = 0.5 exactly, the vertical plane through the edge holds the
+  // sun's centre, so the box hides exactly half of the sun's cap (by the symmetry about that
+  // plane); points at x = +-1.5 see all of it and are exact. A 2 x 2 map over 4 m puts one
+  // column of sub-texel points at x = +-0.5 and one at x = +-1.5, so every texel's L0 is
+  // (1/2 + 1/2 + 1 + 1) / 4 = 3/4 of the sun's closed form. The half is estimated from points
+  // of the cap; its error is the texel's reported estimate (about 95 %), held to twice it.
+  const Lightmapped b = bake_lightmap_scene("penumbra", R"({
+    "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 2, "angular_diameter_deg": 10}],
+    "geometry": [)" + floor_plane(2) + R"(,
+      {"type": "box", "min": [-0.5, 0.5, -3], "max": [0.5, 1, 3], "albedo": 0.5}],
+    "effects": ["direct", "shadows"],
+    "settings": {"target_error_pct": 0.5}})");
+  ASSERT_TRUE(b.status.ok()) << b.status.message;
+  const LightmapTexels& map = b.result.maps[0];
+  ShL2 sun;
+  ASSERT_TRUE(add_directional_light({0, 1, 0}, 10 * kPi / 180, {2, 2, 2}, sun).ok());
+  for (std::size_t t = 0; t < 4; ++t) {
+    const double want = 0.75 * sun.c[0][0];
+    // error_pct is of the texel's mean E/pi, whose L0 part is c_0 Y_0: the L0 error allowed.
+    const double allowed = 2 * map.error_pct[t] / 100 * map.radiance[t].c[0][0];
+    EXPECT_GT(map.error_pct[t], 0.0f);
+    EXPECT_NEAR(map.radiance[t].c[0][0], want, allowed) << t;
+  }
+}
+
+TEST(Lightmap, LightAcrossTheHorizonKeepsItsUpperHalf) {
+  // A sphere light whose centre lies in the floor's plane, off the floor: the tangent plane of
+  // every floor point holds the direction to its centre, so exactly half its cap is above the
+  // horizon and the L0 term is half the closed form (the lift of 1e-4 m tilts that by 3e-5
+  // relative). The horizon is the only occluder here: no geometry, no rays.
+  const Lightmapped b = bake_lightmap_scene("horizon", R"({
+    "lights": [{"type": "sphere", "position": [4, 0, 0], "radius": 0.5, "intensity": 3}],
+    "geometry": [)" + floor_plane(2) + R"(],
+    "effects": ["direct"],
+    "settings": {"target_error_pct": 0.5}})");
+  ASSERT_TRUE(b.status.ok()) << b.status.message;
+  const LightmapTexels& map = b.result.maps[0];
+  // The four texels' points are the 16 points (+-0.5, +-1.5)^2; their mean L0 against half
+  // the mean closed form, within twice the worst texel's estimate plus the lift's tilt.
+  const scene::SceneLight& light = b.scene.lights[0];
+  double got = 0, half = 0, worst = 0;
+  for (std::size_t t = 0; t < 4; ++t) {
+    got += map.radiance[t].c[0][0] / 4;
+    worst = std::max(worst, static_cast<double>(map.error_pct[t]));
+  }
+  for (const double x : {-1.5, -0.5, 0.5, 1.5})
+    for (const double z : {-1.5, -0.5, 0.5, 1.5}) {
+      ShL2 whole;
+      ASSERT_TRUE(add_sphere_light(light.position, light.radius, light.colour, {x, 0, z}, whole).ok());
+      half += 0.5 * whole.c[0][0] / 16;
+    }
+  EXPECT_GT(worst, 0.0);
+  EXPECT_NEAR(got, half, 2 * worst / 100 * got + 1e-4 * half);
 }
 
 TEST(Lightmap, FurnaceConvergesToTheAnalyticValue) {
