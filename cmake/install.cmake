@@ -11,7 +11,8 @@
 # given no inputs (share/shpack/hdri: data/hdri's EXRs, README and licence; the command finds
 # them from its own path, bin/../share/shpack/hdri). lib/io is not installed as a library: it
 # needs OpenEXR and OpenSSL and serves the command. tests/install_consumer builds a project against
-# the installed tree.
+# the installed tree. The licence (LICENSE, NOTICE) goes to share/doc/shpack; the Python module,
+# when it is built, to SHPACK_PYTHON_INSTALL_DIR (python/CMakeLists.txt).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -54,3 +55,42 @@ file(GLOB shpack_bundled_maps ${PROJECT_SOURCE_DIR}/data/hdri/*.exr)
 install(FILES ${shpack_bundled_maps} ${PROJECT_SOURCE_DIR}/data/hdri/README.md
               ${PROJECT_SOURCE_DIR}/data/hdri/license.txt
   DESTINATION ${CMAKE_INSTALL_DATADIR}/shpack/hdri)
+
+# The Python module (SHPACK_BUILD_PYTHON), where Debian's /usr/bin/python3 looks for packages
+# that are not Debian's own (<prefix>/lib/python3/dist-packages; on PYTHONPATH for another
+# prefix). It links lib/io and the core statically and the rest from the system, so it needs
+# no RPATH. lib/io finds the OpenImageIO module first beside the shared object it is linked
+# into (lib/io/src/oiio_plugin.h), so a relative symbolic link there names the one installed
+# for the command: it holds for any --prefix and DESTDIR, and the module is not installed
+# twice. The dist-info folder holds the metadata that importlib.metadata and pip read (name,
+# version, licence); INSTALLER says that pip did not install it, and without a RECORD pip
+# will not remove it.
+if(TARGET shpack_python)
+  set(SHPACK_PYTHON_INSTALL_DIR lib/python3/dist-packages CACHE STRING
+      "Where `cmake --install` puts the Python module shpack, relative to the prefix (or absolute)")
+  install(TARGETS shpack_python LIBRARY DESTINATION ${SHPACK_PYTHON_INSTALL_DIR})
+  install(CODE "
+    set(py_dir \"${SHPACK_PYTHON_INSTALL_DIR}\")
+    set(plugin_dir \"${SHPACK_PLUGIN_INSTALL_DIR}\")
+    foreach(dir py_dir plugin_dir)
+      if(NOT IS_ABSOLUTE \"\${\${dir}}\")
+        set(\${dir} \"\${CMAKE_INSTALL_PREFIX}/\${\${dir}}\")
+      endif()
+    endforeach()
+    file(RELATIVE_PATH target \"\${py_dir}\" \"\${plugin_dir}/$<TARGET_FILE_NAME:shpack_oiio>\")
+    set(link \"\$ENV{DESTDIR}\${py_dir}/$<TARGET_FILE_NAME:shpack_oiio>\")
+    message(STATUS \"Installing: \${link} -> \${target}\")
+    file(CREATE_LINK \"\${target}\" \"\${link}\" SYMBOLIC)
+  ")
+  set(shpack_dist_info ${PROJECT_BINARY_DIR}/python/shpack-${PROJECT_VERSION}.dist-info)
+  configure_file(${PROJECT_SOURCE_DIR}/python/METADATA.in ${shpack_dist_info}/METADATA @ONLY)
+  file(WRITE ${shpack_dist_info}/INSTALLER "cmake\n")
+  file(WRITE ${shpack_dist_info}/top_level.txt "shpack\n")
+  install(FILES ${shpack_dist_info}/METADATA ${shpack_dist_info}/INSTALLER ${shpack_dist_info}/top_level.txt
+                ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/NOTICE
+    DESTINATION ${SHPACK_PYTHON_INSTALL_DIR}/shpack-${PROJECT_VERSION}.dist-info)
+endif()
+
+# The licence of everything above, where Debian keeps a package's (share/doc/<package>).
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/NOTICE
+  DESTINATION ${CMAKE_INSTALL_DOCDIR})

@@ -297,6 +297,7 @@ PYBIND11_MODULE(shpack, m) {
   namespace sp = shpack::python;
   m.doc() = "Unity L2 spherical harmonics from HDR environment maps (shpack).";
   m.attr("__version__") = shpack::io::shpack_version();
+  m.attr("__license__") = "Apache-2.0";  // LICENSE; also in the installed dist-info
   m.def(
       "project",
       [](const py::object& array, const std::string& layout, const std::string& method, const py::object& seed,
