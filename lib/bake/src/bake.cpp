@@ -131,6 +131,9 @@ struct Engine {
   const std::vector<Vec3d>* normals = nullptr;
   std::function<std::string(std::size_t)> receiver_label;  // how messages name receiver k
   std::vector<ShL2> environment_part;  // surfaces: each one's environment over its hemisphere
+  // Per receiver, its share of settings.target_error_pct (surface points averaged into a
+  // texel may each miss it by the square root of their count); null: the target itself.
+  const std::vector<double>* target_scale = nullptr;
 
   Engine(const scene::Scene& s, const BakeOptions& o, unsigned t) : scene(s), options(o), threads(t) {}
 
@@ -235,7 +238,7 @@ struct Engine {
       state.uniform[b] = sobol(e, k, light, b, 0);
       state.guided[b] = sobol(e, k, light, b, 1);
     }
-    Estimate est = run_batches(plan(scene.settings.sky_samples), exact, state);
+    Estimate est = run_batches(plan(scene.settings.sky_samples, k), exact, state);
     add_scaled(est.value, exact, 1.0);
     return est;
   }
@@ -275,7 +278,7 @@ struct Engine {
     one[0].radiance = light_radiance(light);
     for (int b = 0; b < kBatches; ++b) one[0].points[b] = sobol(Effect::Direct, k, l, b);
     ShadowState state{*this, probe_at(k), domain(k), true, one, n};
-    Estimate est = run_batches(plan(scene.settings.shadow_samples), closed, state);
+    Estimate est = run_batches(plan(scene.settings.shadow_samples, k), closed, state);
     count(k, est, n, record_it);
     add_scaled(est.value, closed, 1.0);
     return est.value;
@@ -283,9 +286,10 @@ struct Engine {
 
   // The sample plan of an effect: its fixed count, or the scene's target and cap; in the
   // pilot, kPilotSamples.
-  SamplePlan plan(int fixed) const {
+  SamplePlan plan(int fixed, std::size_t k) const {
     if (piloting) return {0, kPilotSamples, kPilotSamples, false};
-    return {scene.settings.target_error_pct, static_cast<std::uint64_t>(std::max(1, fixed)),
+    const double target = scene.settings.target_error_pct * (target_scale ? (*target_scale)[k] : 1.0);
+    return {target, static_cast<std::uint64_t>(std::max(1, fixed)),
             static_cast<std::uint64_t>(std::max(1, scene.settings.max_samples))};
   }
   // What a target is measured against: the probe's whole light, as the pilot estimated it.
@@ -405,7 +409,7 @@ struct Engine {
       }
       if (!extended.empty()) {
         ShadowState state{*this, p, domain(k), false, extended, n};
-        const Estimate est = run_batches(plan(scene.settings.shadow_samples), denominator(k), state);
+        const Estimate est = run_batches(plan(scene.settings.shadow_samples, k), denominator(k), state);
         add_scaled(out, est.value, 1.0);
         record(k, Effect::Shadows, est, n);
       }
@@ -421,7 +425,7 @@ struct Engine {
       state.uniform[b] = sobol(e, k, 0, b, 0);
       state.guided[b] = sobol(e, k, 0, b, 1);
     }
-    const Estimate est = run_batches(plan(fixed), denominator(k), state);
+    const Estimate est = run_batches(plan(fixed, k), denominator(k), state);
     record(k, e, est, n);
     commit(k, e, est.value);
   }
@@ -655,7 +659,7 @@ struct Engine {
         const std::size_t key = 1000 + static_cast<std::size_t>(b);  // apart from sobol()'s keys
         state.padding[b] = stream(seed(), static_cast<std::uint64_t>(Effect::Bounce), k, key).bits();
       }
-      const Estimate est = run_batches(plan(scene.settings.bounce_samples), denominator(k), state);
+      const Estimate est = run_batches(plan(scene.settings.bounce_samples, k), denominator(k), state);
       record(k, Effect::Bounce, est, n);
       commit(k, Effect::Bounce, est.value);
     }, cost);
@@ -821,12 +825,14 @@ IoStatus surface_validity(const scene::Scene& points, const BakeOptions& options
 }
 
 IoStatus bake_surface_points(const scene::Scene& points, const std::vector<Vec3d>& normals,
+                             const std::vector<double>& target_scale,
                              const std::function<std::string(std::size_t)>& label, const BakeOptions& options,
                              BakeResult& out) {
   try {
     BakeResult result;
     Engine engine(points, options, thread_count(options));
     engine.normals = &normals;
+    engine.target_scale = &target_scale;
     engine.receiver_label = label;
     if (IoStatus st = run_effects(engine, result); !st.ok()) return st;
     result.validity.assign(points.probes.size(), ProbeValidity{});

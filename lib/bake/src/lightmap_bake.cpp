@@ -118,6 +118,18 @@ std::vector<bool> points_to_bake(const scene::Scene& scene, const std::vector<Li
   return wanted;
 }
 
+// For each point, how many points of its texel are baked.
+std::vector<std::size_t> baked_per_texel(const std::vector<LightmapRaster>& rasters, const std::vector<PointOwner>& owners,
+                                         const std::vector<bool>& wanted) {
+  std::vector<std::vector<std::size_t>> per_texel(rasters.size());
+  for (std::size_t m = 0; m < rasters.size(); ++m) per_texel[m].assign(rasters[m].first.size(), 0);
+  for (std::size_t k = 0; k < owners.size(); ++k)
+    if (wanted[k]) ++per_texel[owners[k].map][owners[k].texel];
+  std::vector<std::size_t> out(owners.size());
+  for (std::size_t k = 0; k < owners.size(); ++k) out[k] = std::max<std::size_t>(1, per_texel[owners[k].map][owners[k].texel]);
+  return out;
+}
+
 void add_costs(std::array<EffectCost, kEffectCount>& into, const std::array<EffectCost, kEffectCount>& from) {
   for (std::size_t e = 0; e < kEffectCount; ++e) {
     into[e].enabled = into[e].enabled || from[e].enabled;
@@ -168,15 +180,20 @@ io::IoStatus bake_lightmaps(const scene::Scene& scene, const BakeOptions& option
   chosen.probes.clear();
   std::vector<Vec3> chosen_normals;
   std::vector<std::size_t> index_of;  // chosen point -> point
+  // A texel of K baked points has the error sqrt(sum e_k^2) / K (gather_texels): each point
+  // meeting sqrt(K) times the target gives the texel the target itself.
+  std::vector<double> target_scale;
+  const std::vector<std::size_t> counts = baked_per_texel(rasters, owners, wanted);
   for (std::size_t k = 0; k < points.probes.size(); ++k)
     if (wanted[k]) {
       chosen.probes.push_back(points.probes[k]);
       chosen_normals.push_back(normals[k]);
       index_of.push_back(k);
+      target_scale.push_back(std::sqrt(static_cast<double>(counts[k])));
     }
   BakeResult part;
   const auto label = [&](std::size_t k) { return texel_label(scene, rasters, owners[index_of[k]]); };
-  if (io::IoStatus st = bake_surface_points(chosen, chosen_normals, label, options, part); !st.ok()) return st;
+  if (io::IoStatus st = bake_surface_points(chosen, chosen_normals, target_scale, label, options, part); !st.ok()) return st;
   BakeResult baked;  // every point: the chosen ones' results, zero for the others (never read)
   baked.radiance.assign(points.probes.size(), ShL2{});
   baked.sampling.assign(points.probes.size(), {});
