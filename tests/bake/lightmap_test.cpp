@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <numbers>
 #include <string>
 
@@ -287,6 +289,15 @@ TEST(Lightmap, ImagesPackTheProbesShaderVectors) {
   // hemisphere, E(up) = pi L, so E/pi = L = 0.7 (float rounding of the packing: 1e-6).
   const std::vector<float>& a = images[0].pixels;
   EXPECT_NEAR(a[1] + a[3], 0.7, 1e-6);
+}
+
+TEST(Lightmap, UnityPackageShipsTheSidecarsHlsl) {
+  // The package's include and the sidecar's "hlsl" are one text.
+  std::ifstream in(std::string(SHPACK_SOURCE_DIR) + "/unity/Runtime/ShpackLightmap.hlsl", std::ios::binary);
+  ASSERT_TRUE(in);
+  std::ostringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), lightmap_hlsl());
 }
 
 }  // namespace

@@ -86,37 +86,40 @@ bool lightmap_images(const scene::LightmapTarget& target, const LightmapTexels& 
   return true;
 }
 
-std::string lightmap_hlsl(bool l2) {
-  std::string out =
-      "// shpack SH lightmap: E(n)/pi at a texel, for a unit world-space normal n (Unity's frame).\n"
-      "// Each texture holds, per texel, one of Unity's SH shader vectors (unity_SHAr, ...): sample\n"
-      "// them with bilinear filtering at the lightmap UV (uv2 in Unity) and evaluate them as\n"
-      "// UnityCG.cginc's SHEvalLinearL0L1" + std::string(l2 ? " + SHEvalLinearL2" : "") + " does for a probe.\n"
+std::string lightmap_hlsl() {
+  return
+      "// ShpackLightmap.hlsl - E(n)/pi at a texel of a shpack SH lightmap, for a unit world-space\n"
+      "// normal n (Unity's frame). Each texture holds, per texel, one of Unity's SH shader vectors\n"
+      "// (unity_SHAr, ...): they are sampled with bilinear filtering at the lightmap UV (uv2 in\n"
+      "// Unity) and evaluated as UnityCG.cginc's SHEvalLinearL0L1 (+ SHEvalLinearL2) does for a\n"
+      "// probe. For an L2 lightmap, #define SHPACK_LIGHTMAP_L2 1 before including this file.\n"
       "#ifndef SHPACK_LIGHTMAP_INCLUDED\n"
-      "#define SHPACK_LIGHTMAP_INCLUDED\n\n"
-      "Texture2D<float4> _ShpackSHAr, _ShpackSHAg, _ShpackSHAb;\n";
-  if (l2) out += "Texture2D<float4> _ShpackSHBr, _ShpackSHBg, _ShpackSHBb, _ShpackSHC;\n";
-  out +=
-      "SamplerState sampler_linear_clamp;\n\n"
+      "#define SHPACK_LIGHTMAP_INCLUDED\n"
+      "\n"
+      "Texture2D<float4> _ShpackSHAr, _ShpackSHAg, _ShpackSHAb;\n"
+      "#if SHPACK_LIGHTMAP_L2\n"
+      "Texture2D<float4> _ShpackSHBr, _ShpackSHBg, _ShpackSHBb, _ShpackSHC;\n"
+      "#endif\n"
+      "SamplerState sampler_linear_clamp;\n"
+      "\n"
       "float3 ShpackLightmapSH(float2 lightmapUV, float3 n)\n"
       "{\n"
       "    float4 n1 = float4(n, 1.0f);\n"
       "    float4 ar = _ShpackSHAr.SampleLevel(sampler_linear_clamp, lightmapUV, 0);\n"
       "    float4 ag = _ShpackSHAg.SampleLevel(sampler_linear_clamp, lightmapUV, 0);\n"
       "    float4 ab = _ShpackSHAb.SampleLevel(sampler_linear_clamp, lightmapUV, 0);\n"
-      "    float3 e = float3(dot(ar, n1), dot(ag, n1), dot(ab, n1));\n";
-  if (l2)
-    out +=
-        "    float4 q = n.xyzz * n.yzzx;\n"
-        "    e += float3(dot(_ShpackSHBr.SampleLevel(sampler_linear_clamp, lightmapUV, 0), q),\n"
-        "                dot(_ShpackSHBg.SampleLevel(sampler_linear_clamp, lightmapUV, 0), q),\n"
-        "                dot(_ShpackSHBb.SampleLevel(sampler_linear_clamp, lightmapUV, 0), q));\n"
-        "    e += _ShpackSHC.SampleLevel(sampler_linear_clamp, lightmapUV, 0).rgb * (n.x * n.x - n.y * n.y);\n";
-  out +=
+      "    float3 e = float3(dot(ar, n1), dot(ag, n1), dot(ab, n1));\n"
+      "#if SHPACK_LIGHTMAP_L2\n"
+      "    float4 q = n.xyzz * n.yzzx;\n"
+      "    e += float3(dot(_ShpackSHBr.SampleLevel(sampler_linear_clamp, lightmapUV, 0), q),\n"
+      "                dot(_ShpackSHBg.SampleLevel(sampler_linear_clamp, lightmapUV, 0), q),\n"
+      "                dot(_ShpackSHBb.SampleLevel(sampler_linear_clamp, lightmapUV, 0), q));\n"
+      "    e += _ShpackSHC.SampleLevel(sampler_linear_clamp, lightmapUV, 0).rgb * (n.x * n.x - n.y * n.y);\n"
+      "#endif\n"
       "    return e;  // E(n)/pi: times the albedo, the diffuse light\n"
-      "}\n\n"
+      "}\n"
+      "\n"
       "#endif  // SHPACK_LIGHTMAP_INCLUDED\n";
-  return out;
 }
 
 std::string lightmap_sidecar(const scene::Scene& scene, const scene::LightmapTarget& target,
@@ -157,7 +160,8 @@ std::string lightmap_sidecar(const scene::Scene& scene, const scene::LightmapTar
                              {"p95", quantile(errors, 0.95)}, {"median", quantile(errors, 0.5)},
                              {"target", scene.settings.target_error_pct}};
   j["time_ms"] = result.time_ms;
-  j["hlsl"] = lightmap_hlsl(target.l2);
+  j["hlsl_defines"] = target.l2 ? "#define SHPACK_LIGHTMAP_L2 1" : "";
+  j["hlsl"] = lightmap_hlsl();
   return j.dump(2) + "\n";
 }
 

@@ -33,7 +33,8 @@ bool lightmap_images(const scene::LightmapTarget& target, const LightmapTexels& 
 std::string lightmap_sidecar(const scene::Scene& scene, const scene::LightmapTarget& target,
                              const LightmapTexels& map, const LightmapBakeResult& result);
 
-// The HLSL include that evaluates a texel (docs/lightmaps.md), for L1 or L2 lightmaps.
-std::string lightmap_hlsl(bool l2);
+// The HLSL include that evaluates a texel (docs/lightmaps.md; the Unity package ships it as
+// Runtime/ShpackLightmap.hlsl): L1, or L2 with SHPACK_LIGHTMAP_L2 defined to 1.
+std::string lightmap_hlsl();
 
 }  // namespace shpack::bake
