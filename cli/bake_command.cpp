@@ -82,6 +82,26 @@ void warn_capped_probes(const scene::Scene& scene, const bake::BakeResult& resul
   report_error(os.str());
 }
 
+// --lightmap-dir, or the output's folder, or (stdout) the current one.
+std::filesystem::path lightmap_folder(const BakeCommandOptions& options) {
+  std::filesystem::path dir = options.lightmap_dir;
+  if (dir.empty() && !options.output.empty() && options.output != "-")
+    dir = std::filesystem::path(options.output).parent_path();
+  return dir.empty() ? std::filesystem::path(".") : dir;
+}
+
+// Every file the scene's lightmaps are written to (lightmap_output.h's groups, the sidecar).
+std::vector<std::filesystem::path> lightmap_files(const scene::Scene& scene, const std::filesystem::path& dir) {
+  std::vector<std::filesystem::path> files;
+  for (const scene::LightmapTarget& target : scene.lightmaps) {
+    for (const char* group : {"SHAr", "SHAg", "SHAb", "texels"}) files.push_back(dir / (target.name + "." + group + ".exr"));
+    if (target.l2)
+      for (const char* group : {"SHBr", "SHBg", "SHBb", "SHC"}) files.push_back(dir / (target.name + "." + group + ".exr"));
+    files.push_back(dir / (target.name + ".lightmap.json"));
+  }
+  return files;
+}
+
 // Each lightmap's images (<name>.<group>.exr) and sidecar (<name>.lightmap.json) in `dir`,
 // each file written atomically; the first failure stops and is returned.
 io::IoStatus write_lightmaps(const scene::Scene& scene, const bake::LightmapBakeResult& result,
@@ -147,11 +167,15 @@ int run_bake(const BakeCommandOptions& options) {
     report_error(st.message);
     return kExitFailure;
   }
-  // The output is none of the files read: the scene, its map, its meshes (before the bake).
-  if (const std::string problem = check_output_not_input(options.output, scene_input_files(scene)); !problem.empty()) {
-    report_usage_error("bake", problem);
-    return kExitUsage;
-  }
+  // The outputs are none of the files read: the scene, its map, its meshes (before the bake).
+  const std::filesystem::path lightmap_dir = lightmap_folder(options);
+  std::vector<std::string> outputs{options.output};
+  for (const std::filesystem::path& file : lightmap_files(scene, lightmap_dir)) outputs.push_back(file.string());
+  for (const std::string& output : outputs)
+    if (const std::string problem = check_output_not_input(output, scene_input_files(scene)); !problem.empty()) {
+      report_usage_error("bake", problem);
+      return kExitUsage;
+    }
   bake::BakeOptions bake_options;
   // More threads than cores cannot be faster, and each costs a stack and buffers: 100000
   // took 7 s and 550 MB for 75 probes, 2^32 - 1 ran out of memory. The output is the same for
@@ -173,11 +197,7 @@ int run_bake(const BakeCommandOptions& options) {
       return kExitFailure;
     }
     json_options.lightmaps = &lightmaps;
-    std::filesystem::path dir = options.lightmap_dir;
-    if (dir.empty() && !options.output.empty() && options.output != "-")
-      dir = std::filesystem::path(options.output).parent_path();
-    if (dir.empty()) dir = ".";
-    if (io::IoStatus st = write_lightmaps(scene, lightmaps, dir); !st.ok()) {
+    if (io::IoStatus st = write_lightmaps(scene, lightmaps, lightmap_dir); !st.ok()) {
       report_error(st.message);
       return kExitFailure;
     }

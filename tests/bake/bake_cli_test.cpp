@@ -42,6 +42,46 @@ TEST(BakeCli, WritesProbesAndEffectCosts) {
   EXPECT_EQ(doc.at("effects").at("shadows").at("rays"), 0);
 }
 
+TEST(BakeCli, WritesLightmapImagesAndSidecar) {
+  // A lightmap-only scene: the images and the sidecar land beside the output, the preview reads
+  // them, and the sidecar says how to read them.
+  const fs::path scene = shpack_test::write_scene("cli_lightmap.json", R"({
+    "environment": {"type": "gradient", "zenith": 0.6, "horizon": 0.6, "ground": 0.6},
+    "geometry": [{"type": "plane", "name": "floor/../x", "position": [0, 0, 0], "right": [0, 0, 1], "up": [1, 0, 0],
+                  "size": [2, 2], "lightmap": {"resolution": [4, 2], "l2": true}}],
+    "effects": ["environment"]})");
+  const fs::path dir = shpack_test::scene_scratch() / "cli_lightmap_out";
+  fs::create_directories(dir);
+  std::string err;
+  ASSERT_EQ(run("bake " + scene.string() + " -o " + (dir / "out.json").string() + " --quiet", err), 0) << err;
+  // The name is a file stem: '/' and '.' are replaced, so nothing is written outside `dir`.
+  for (const char* group : {"SHAr", "SHAg", "SHAb", "SHBr", "SHBg", "SHBb", "SHC", "texels"})
+    EXPECT_TRUE(fs::is_regular_file(dir / (std::string("floor____x.") + group + ".exr"))) << group;
+  const nlohmann::json sidecar = nlohmann::json::parse(std::ifstream(dir / "floor____x.lightmap.json"));
+  EXPECT_EQ(sidecar.at("kind"), "shpack-sh-lightmap");
+  EXPECT_EQ(sidecar.at("bands"), "L2");
+  EXPECT_EQ(sidecar.at("texels").at("used"), 8);
+  const nlohmann::json doc = nlohmann::json::parse(std::ifstream(dir / "out.json"));
+  EXPECT_EQ(doc.at("lightmaps").at(0).at("sidecar"), "floor____x.lightmap.json");
+  EXPECT_EQ(doc.at("probes").size(), 0u);
+  ASSERT_EQ(run("preview " + (dir / "floor____x.lightmap.json").string() + " -o " + (dir / "p.png").string(), err), 0)
+      << err;
+  EXPECT_TRUE(fs::is_regular_file(dir / "p.png"));
+}
+
+TEST(BakeCli, LightmapOnAMeshWithoutUvsIsOneLine) {
+  shpack_test::write_scene("cli_no_uv.obj", "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n");
+  const fs::path scene = shpack_test::write_scene("cli_no_uv.json", R"({
+    "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 3}],
+    "geometry": [{"type": "mesh", "path": "cli_no_uv.obj", "lightmap": {"resolution": [4, 4]}}],
+    "effects": ["direct"]})");
+  std::string err;
+  EXPECT_EQ(run("bake " + scene.string() + " -o " + (shpack_test::scene_scratch() / "no_uv.json").string(), err), 1);
+  EXPECT_NE(err.find("cli_no_uv.obj"), std::string::npos) << err;
+  EXPECT_NE(err.find("lightmap"), std::string::npos) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+}
+
 TEST(BakeCli, UnityProbesFormatIsFlatArraysInProbeOrder) {
   const fs::path scene = shpack_test::write_scene("cli_unity.json", kGood);
   const fs::path out = shpack_test::scene_scratch() / "cli_unity_out.json";
