@@ -1,11 +1,13 @@
 // Tests of the glTF reader (lib/scene/src/gltf_mesh.h): crafted files that crashed or were
 // misread before (wrapping bounds checks, negative offsets, unsafe buffer URIs), the parts of
-// glTF it now reads (strips, fans, quantized positions, sparse accessors, materials) and the
-// work budgets of node DAGs. Positions are asserted exactly, errors by message substring.
+// glTF it now reads (strips, fans, quantized positions, sparse accessors, materials, with_uv's
+// TEXCOORD_1 and NORMAL) and the work budgets of node DAGs. Positions and UVs are asserted
+// exactly, transformed normals to 1e-15, errors by message substring.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -388,6 +390,216 @@ TEST(Gltf, GlbChunksAreChecked) {
   std::memcpy(huge.data() + 12, &big, 4);  // the JSON chunk's length
   EXPECT_HAS(error_of("huge.glb", huge), "a .glb chunk at byte 12 longer than the file");
   EXPECT_HAS(error_of("short.glb", glb.substr(0, 10)), "a .glb shorter than its 12-byte header");
+}
+
+// ---- lightmap UVs (TEXCOORD_1) and normals, with_uv ----
+
+TriangleMesh read_uv(const std::string& name, const std::string& text) {
+  return read_gltf(shpack_test::write_scene(name, text), {}, /*with_uv=*/true);
+}
+
+std::string error_of_uv(const std::string& name, const std::string& text) {
+  try {
+    read_uv(name, text);
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    return what;
+  }
+  return "";
+}
+
+// The triangle's positions (view 0, accessor 0) and `attribute` bytes after them (view 1).
+std::string attribute_document(const std::string& attribute, const std::string& accessors, const std::string& primitive,
+                               const std::string& extra = "") {
+  const std::string bytes = bytes_of(kTriangle) + attribute;
+  return document(data_uri_buffer(bytes),
+                  R"({"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": )" +
+                      std::to_string(attribute.size()) + "}",
+                  float_accessor(3) + ", " + accessors, primitive, extra);
+}
+
+const std::string kQuantization = R"(, "extensionsUsed": ["KHR_mesh_quantization"], "extensionsRequired": ["KHR_mesh_quantization"])";
+
+TEST(GltfUv, FloatTexcoord1IsCopiedAndCountedAsTheSecondSet) {
+  const std::vector<float> uv = {0.25f, 0.5f, 1, 0.75f, 0.125f, 0};
+  const std::string doc = attribute_document(bytes_of(uv), R"({"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC2"})",
+                                             R"({"attributes": {"POSITION": 0, "TEXCOORD_0": 1, "TEXCOORD_1": 1}})");
+  const TriangleMesh m = read_uv("uv1.gltf", doc);
+  EXPECT_EQ(m.uv1, (std::vector<double>{0.25, 0.5, 1, 0.75, 0.125, 0}));
+  EXPECT_EQ(m.texcoord_sets, 2);
+  EXPECT_EQ(m.vertices, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0}));
+  EXPECT_TRUE(m.normals.empty());
+  // Without with_uv: the same mesh, no UVs, the sets still counted.
+  const TriangleMesh plain = read("uv1plain.gltf", doc);
+  EXPECT_TRUE(plain.uv1.empty());
+  EXPECT_EQ(plain.texcoord_sets, 2);
+  EXPECT_EQ(plain.vertices, m.vertices);
+  EXPECT_EQ(plain.indices, m.indices);
+}
+
+TEST(GltfUv, NormalizedUnsignedTexcoordsAreDividedByTheirMaximum) {
+  const std::vector<std::uint16_t> u16 = {0, 65535, 32768, 1, 12345, 65534};
+  const TriangleMesh m = read_uv("uv16.gltf", attribute_document(bytes_of(u16),
+                                                                 R"({"bufferView": 1, "componentType": 5123, "normalized": true, "count": 3, "type": "VEC2"})",
+                                                                 R"({"attributes": {"POSITION": 0, "TEXCOORD_1": 1}})"));
+  EXPECT_EQ(m.uv1, (std::vector<double>{0, 1, 32768 / 65535.0, 1 / 65535.0, 12345 / 65535.0, 65534 / 65535.0}));
+  EXPECT_EQ(m.texcoord_sets, 0);  // no TEXCOORD_0
+  const std::vector<std::uint8_t> u8 = {0, 255, 51, 102, 1, 254};
+  const TriangleMesh b = read_uv("uv8.gltf", attribute_document(bytes_of(u8),
+                                                                R"({"bufferView": 1, "componentType": 5121, "normalized": true, "count": 3, "type": "VEC2"})",
+                                                                R"({"attributes": {"POSITION": 0, "TEXCOORD_1": 1}})"));
+  EXPECT_EQ(b.uv1, (std::vector<double>{0, 1, 51 / 255.0, 102 / 255.0, 1 / 255.0, 254 / 255.0}));
+  // Unnormalized UNSIGNED_SHORT and (un)normalized SHORT need KHR_mesh_quantization, which
+  // then gives the integers themselves or v / 32767.
+  const std::string raw = R"({"bufferView": 1, "componentType": 5123, "count": 3, "type": "VEC2"})";
+  const std::string prim = R"({"attributes": {"POSITION": 0, "TEXCOORD_1": 1}})";
+  EXPECT_HAS(error_of_uv("uvraw.gltf", attribute_document(bytes_of(u16), raw, prim)),
+             "accessors[1]: TEXCOORD_1 of UNSIGNED_SHORT needs the extension KHR_mesh_quantization");
+  EXPECT_EQ(read_uv("uvrawq.gltf", attribute_document(bytes_of(u16), raw, prim, kQuantization)).uv1,
+            (std::vector<double>{0, 65535, 32768, 1, 12345, 65534}));
+  const std::vector<std::int16_t> s16 = {-32767, 32767, 16384, 0, -1, 7};
+  EXPECT_EQ(read_uv("uvs16.gltf", attribute_document(bytes_of(s16),
+                                                     R"({"bufferView": 1, "componentType": 5122, "normalized": true, "count": 3, "type": "VEC2"})",
+                                                     prim, kQuantization))
+                .uv1,
+            (std::vector<double>{-1, 1, 16384 / 32767.0, 0, -1 / 32767.0, 7 / 32767.0}));
+  EXPECT_HAS(error_of_uv("uvs16noext.gltf", attribute_document(bytes_of(s16),
+                                                               R"({"bufferView": 1, "componentType": 5122, "normalized": true, "count": 3, "type": "VEC2"})",
+                                                               prim)),
+             "accessors[1]: TEXCOORD_1 of normalized SHORT needs the extension KHR_mesh_quantization");
+  // Never UNSIGNED_INT, never anything but VEC2.
+  EXPECT_HAS(error_of_uv("uvint.gltf", attribute_document(bytes_of(std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5}),
+                                                          R"({"bufferView": 1, "componentType": 5125, "count": 3, "type": "VEC2"})",
+                                                          prim, kQuantization)),
+             "accessors[1]: TEXCOORD_1 of UNSIGNED_INT is not allowed");
+  EXPECT_HAS(error_of_uv("uvvec3.gltf", attribute_document(bytes_of(kTriangle), R"({"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"})",
+                                                           prim)),
+             "accessors[1]: TEXCOORD_1 must be VEC2, not VEC3");
+}
+
+TEST(GltfUv, SparseTexcoord1SubstitutesItsValues) {
+  // Base: three UVs; sparse: vertex 1 becomes (0.5, 0.25). Bytes after the positions: 24 base,
+  // 4 index (uint16 + pad), 8 values.
+  const std::string attribute = bytes_of(std::vector<float>{0, 0, 1, 0, 0, 1}) + bytes_of(std::vector<std::uint16_t>{1, 0}) +
+                                bytes_of(std::vector<float>{0.5f, 0.25f});
+  const std::string bytes = bytes_of(kTriangle) + attribute;
+  const std::string views = R"({"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 24},
+                               {"buffer": 0, "byteOffset": 60, "byteLength": 4}, {"buffer": 0, "byteOffset": 64, "byteLength": 8})";
+  const std::string sparse = R"("sparse": {"count": 1, "indices": {"bufferView": 2, "componentType": 5123}, "values": {"bufferView": 3}})";
+  const TriangleMesh m = read_uv("uvsparse.gltf", document(data_uri_buffer(bytes), views,
+                                                           float_accessor(3) + R"(, {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC2", )" +
+                                                               sparse + "}",
+                                                           R"({"attributes": {"POSITION": 0, "TEXCOORD_1": 1}})"));
+  EXPECT_EQ(m.uv1, (std::vector<double>{0, 0, 0.5, 0.25, 0, 1}));
+  // Without a bufferView the base is zeros.
+  const TriangleMesh z = read_uv("uvsparse0.gltf", document(data_uri_buffer(bytes), views,
+                                                            float_accessor(3) + R"(, {"componentType": 5126, "count": 3, "type": "VEC2", )" + sparse + "}",
+                                                            R"({"attributes": {"POSITION": 0, "TEXCOORD_1": 1}})"));
+  EXPECT_EQ(z.uv1, (std::vector<double>{0, 0, 0.5, 0.25, 0, 0}));
+}
+
+TEST(GltfUv, ATexcoord1CountOtherThanPositionsIsRefusedNamingTheAccessor) {
+  const std::vector<float> uv = {0, 0, 1, 0, 0, 1};
+  const std::string doc = attribute_document(bytes_of(uv), R"({"bufferView": 1, "componentType": 5126, "count": 2, "type": "VEC2"})",
+                                             R"({"attributes": {"POSITION": 0, "TEXCOORD_1": 1}})");
+  EXPECT_HAS(error_of_uv("uvcount.gltf", doc),
+             "accessors[1]: TEXCOORD_1 of meshes[0].primitives[0] has count 2, but its POSITION (accessors[0]) has 3");
+  // A caller that does not ask for UVs reads the file as before.
+  EXPECT_EQ(read("uvcountplain.gltf", doc).vertices, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0}));
+  // Ranges and finiteness are checked as POSITION's are.
+  EXPECT_HAS(error_of_uv("uvrange.gltf", attribute_document(bytes_of(uv), R"({"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"})",
+                                                            R"({"attributes": {"POSITION": 0, "TEXCOORD_1": 1}})")),
+             "accessors[1]: count 4 (byteOffset 0, byteStride 8) exceeds its buffer view (24 bytes)");
+  const std::vector<float> nan = {0, 0, 1, std::nanf(""), 0, 1};
+  EXPECT_HAS(error_of_uv("uvnan.gltf", attribute_document(bytes_of(nan), R"({"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC2"})",
+                                                          R"({"attributes": {"POSITION": 0, "TEXCOORD_1": 1}})")),
+             "accessors[1]: TEXCOORD_1 of vertex 1 is not finite");
+  EXPECT_HAS(error_of_uv("uvmissing.gltf", attribute_document(bytes_of(uv), R"({"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC2"})",
+                                                              R"({"attributes": {"POSITION": 0, "TEXCOORD_1": 7}})")),
+             "meshes[0].primitives[0].attributes.TEXCOORD_1: accessors[7] does not exist (2 accessors)");
+}
+
+TEST(GltfUv, UvSetsAreCountedAndTexcoord1ReadOnlyWhenEveryPrimitiveHasIt) {
+  const std::vector<float> uv = {0, 0, 1, 0, 0, 1};
+  const std::string accessor = R"({"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC2"})";
+  // Only TEXCOORD_0: one set, no lightmap UVs.
+  const TriangleMesh one = read_uv("uv0.gltf", attribute_document(bytes_of(uv), accessor, R"({"attributes": {"POSITION": 0, "TEXCOORD_0": 1}})"));
+  EXPECT_TRUE(one.uv1.empty());
+  EXPECT_EQ(one.texcoord_sets, 1);
+  // No TEXCOORD at all: none.
+  const TriangleMesh none = read_uv("uvnone.gltf", attribute_document(bytes_of(uv), accessor, R"({"attributes": {"POSITION": 0}})"));
+  EXPECT_TRUE(none.uv1.empty());
+  EXPECT_EQ(none.texcoord_sets, 0);
+  // Two primitives, one without TEXCOORD_1 (whose broken TEXCOORD_1 elsewhere is then not
+  // read either): no uv1, and the least number of sets.
+  const TriangleMesh mixed = read_uv("uvmixed.gltf", attribute_document(bytes_of(uv), accessor,
+                                                                        R"({"attributes": {"POSITION": 0, "TEXCOORD_0": 1, "TEXCOORD_1": 1, "TEXCOORD_2": 1}},
+                                                                           {"attributes": {"POSITION": 0, "TEXCOORD_0": 1, "TEXCOORD_1": 9}},
+                                                                           {"attributes": {"POSITION": 0, "TEXCOORD_0": 1, "TEXCOORD_2": 1}})"));
+  EXPECT_TRUE(mixed.uv1.empty());
+  EXPECT_EQ(mixed.texcoord_sets, 1);
+  EXPECT_EQ(mixed.vertices.size(), 27u);
+}
+
+TEST(GltfUv, NormalsAreTransformedByTheInverseTransposeAndNormalised) {
+  // The node: scale x by 2, then rotate 90 degrees about z ((x, y, z) -> (-y, x, z)), then move.
+  // Its inverse transpose is R S^-1: (1, 1, 0) -> (0.5, 1, 0) -> (-1, 0.5, 0), normalised
+  // (-2, 1, 0) / sqrt(5); M itself would give (-1, 2, 0) / sqrt(5).
+  const std::vector<float> n = {1, 1, 0, 1, 0, 0, 0, 0, 3};
+  std::string doc = attribute_document(bytes_of(n), R"({"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"})",
+                                       R"({"attributes": {"POSITION": 0, "NORMAL": 1}})");
+  set_nodes(doc, R"("nodes": [{"mesh": 0, "matrix": [0, 2, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 5, 6, 7, 1]}])");
+  const TriangleMesh m = read_uv("normals.gltf", doc);
+  EXPECT_EQ(m.vertices, (std::vector<double>{5, 6, 7, 5, 8, 7, 4, 6, 7}));
+  const std::vector<double> want = {-2 / std::sqrt(5.0), 1 / std::sqrt(5.0), 0, 0, 1, 0, 0, 0, 1};
+  ASSERT_EQ(m.normals.size(), want.size());
+  for (std::size_t k = 0; k < want.size(); ++k) EXPECT_NEAR(m.normals[k], want[k], 1e-15) << k;
+  EXPECT_TRUE(read("normalsplain.gltf", doc).normals.empty());
+  // A mirroring node turns normals with the surface; a zero normal stays zero.
+  const std::vector<float> z = {1, 0, 0, 0, 0, 0, 0, 1, 0};
+  std::string mirror = attribute_document(bytes_of(z), R"({"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"})",
+                                          R"({"attributes": {"POSITION": 0, "NORMAL": 1}})");
+  set_nodes(mirror, R"("nodes": [{"mesh": 0, "scale": [-1, 3, 1]}])");
+  EXPECT_EQ(read_uv("mirror.gltf", mirror).normals, (std::vector<double>{-1, 0, 0, 0, 0, 0, 0, 1, 0}));
+  // Quantized normals: normalized BYTE under KHR_mesh_quantization, refused without it.
+  const std::vector<std::int8_t> b = {127, 0, 0, 0, 0, -127, 0, 0, 0, 0, 127, 0};  // VEC3 + a padding byte each
+  const std::string quantized = R"({"bufferView": 1, "componentType": 5120, "normalized": true, "count": 3, "type": "VEC3"})";
+  std::string qdoc = attribute_document(bytes_of(b), quantized, R"({"attributes": {"POSITION": 0, "NORMAL": 1}})", kQuantization);
+  qdoc.replace(qdoc.find(R"("byteLength": 12})"), 17, R"("byteLength": 12, "byteStride": 4})");
+  EXPECT_EQ(read_uv("qnormals.gltf", qdoc).normals, (std::vector<double>{1, 0, 0, 0, -1, 0, 0, 0, 1}));
+  EXPECT_HAS(error_of_uv("qnormalsnoext.gltf", attribute_document(bytes_of(b), quantized, R"({"attributes": {"POSITION": 0, "NORMAL": 1}})")),
+             "accessors[1]: NORMAL of normalized BYTE needs the extension KHR_mesh_quantization");
+  EXPECT_HAS(error_of_uv("normalsu8.gltf", attribute_document(bytes_of(b), R"({"bufferView": 1, "componentType": 5121, "normalized": true, "count": 3, "type": "VEC3"})",
+                                                              R"({"attributes": {"POSITION": 0, "NORMAL": 1}})", kQuantization)),
+             "accessors[1]: NORMAL of normalized UNSIGNED_BYTE is not allowed");
+}
+
+TEST(GltfUv, SplitByMaterialCarriesUvsAndNormals) {
+  // Primitive 0 (material 0) and 1 (no material) share the positions; their UVs differ.
+  const std::string attribute = bytes_of(std::vector<float>{0, 0, 1, 0, 0, 1, 0.5f, 0.5f, 0.25f, 0.25f, 0.75f, 0.75f}) +
+                                bytes_of(std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1});
+  const std::string bytes = bytes_of(kTriangle) + attribute;
+  const std::string views = R"({"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 24},
+                               {"buffer": 0, "byteOffset": 60, "byteLength": 24}, {"buffer": 0, "byteOffset": 84, "byteLength": 36})";
+  const std::string accessors = float_accessor(3) + R"(, {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC2"},
+      {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC2"}, {"bufferView": 3, "componentType": 5126, "count": 3, "type": "VEC3"})";
+  const TriangleMesh m = read_uv("uvparts.gltf", document(data_uri_buffer(bytes), views, accessors,
+                                                          R"({"attributes": {"POSITION": 0, "TEXCOORD_1": 1, "NORMAL": 3}, "material": 0},
+                                                             {"attributes": {"POSITION": 0, "TEXCOORD_1": 2, "NORMAL": 3}})",
+                                                          R"(, "materials": [{}])"));
+  ASSERT_EQ(m.uv1.size(), 12u);
+  const std::vector<MeshPart> parts = split_by_material(m);
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_EQ(parts[0].material, -1);
+  EXPECT_EQ(parts[0].uv1, (std::vector<double>{0.5, 0.5, 0.25, 0.25, 0.75, 0.75}));
+  EXPECT_EQ(parts[0].normals, (std::vector<double>{0, 0, 1, 0, 0, 1, 0, 0, 1}));
+  EXPECT_EQ(parts[1].material, 0);
+  EXPECT_EQ(parts[1].uv1, (std::vector<double>{0, 0, 1, 0, 0, 1}));
+  EXPECT_EQ(parts[1].vertices, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0}));
+  // Without UVs the parts have none.
+  for (const MeshPart& part : split_by_material(read("uvpartsplain.gltf", document(data_uri_buffer(bytes), views, accessors))))
+    EXPECT_TRUE(part.uv1.empty() && part.normals.empty());
 }
 
 }  // namespace

@@ -315,10 +315,20 @@ struct Layout {
   int sparse_index_type = 0;
 };
 
+// What an accessor holds, for layout()'s checks of its type and component type.
+enum class Role : std::uint8_t { Position, Index, Texcoord, Normal };
+
 struct Primitive {
   std::string path;       // "meshes[0].primitives[1]"
   Layout positions;
   std::optional<Layout> indices;
+  // TEXCOORD_1 and NORMAL: the attributes' values, not yet checked (a caller that does not
+  // ask for them is not refused over them), and their layouts once read() has decided to read
+  // them (only when asked and every primitive has them).
+  const Json* uv1_accessor = nullptr;
+  const Json* normal_accessor = nullptr;
+  std::optional<Layout> uv1, normals;
+  int texcoord_sets = 0;  // TEXCOORD_0 .. TEXCOORD_{n-1} all present
   int mode = 4;
   std::int32_t material = -1;  // index into the glTF's materials
   u64 triangles = 0;
@@ -337,7 +347,7 @@ class Reader {
     check_asset_and_extensions();
   }
 
-  TriangleMesh read() {
+  TriangleMesh read(bool with_uv) {
     const std::vector<u64> roots = scene_roots();
     const std::vector<u64> order = topological_order(roots);  // parents before children
     // Instances of each node: the number of paths to it from the roots (saturating).
@@ -377,18 +387,43 @@ class Reader {
       fail("nodes", "the scene instantiates " + more(node_instances) + " nodes, more than the budget of " +
                         std::to_string(limits_.max_node_instances) + " (nodes shared by several parents multiply)");
 
+    TriangleMesh out;
+    // TEXCOORD_1 and NORMAL: read (and checked, before anything is decoded) only when asked
+    // for and every instanced primitive has them; otherwise uv1 / normals stay empty.
+    bool any = false, all_uv1 = true, all_normals = true;
+    int sets = std::numeric_limits<int>::max();
+    for (const auto& [mesh, primitives] : meshes)
+      for (const Primitive& p : primitives) {
+        any = true;
+        sets = std::min(sets, p.texcoord_sets);
+        all_uv1 = all_uv1 && p.uv1_accessor != nullptr;
+        all_normals = all_normals && p.normal_accessor != nullptr;
+      }
+    out.texcoord_sets = any ? sets : 0;
+    const bool read_uv1 = with_uv && any && all_uv1, read_normals = with_uv && any && all_normals;
+    for (auto& [mesh, primitives] : meshes)
+      for (Primitive& p : primitives) {
+        if (read_uv1) p.uv1 = attribute_layout(p, *p.uv1_accessor, "TEXCOORD_1", Role::Texcoord);
+        if (read_normals) p.normals = attribute_layout(p, *p.normal_accessor, "NORMAL", Role::Normal);
+      }
+
     // Each mesh decoded once, in its own space, then placed by every path to it.
     struct Decoded {
       std::vector<double> positions;
       std::vector<std::uint32_t> triangles;
       std::int32_t material;
+      std::vector<double> uv1, normals;
     };
     std::map<u64, std::vector<Decoded>> decoded;
     for (auto& [mesh, primitives] : meshes)
-      for (const Primitive& p : primitives) decoded[mesh].push_back({decode_positions(p), triangulate(p), p.material});
+      for (const Primitive& p : primitives)
+        decoded[mesh].push_back({decode_positions(p), triangulate(p), p.material,
+                                 p.uv1 ? decode_finite(*p.uv1, "TEXCOORD_1") : std::vector<double>{},
+                                 p.normals ? decode_finite(*p.normals, "NORMAL") : std::vector<double>{}});
 
-    TriangleMesh out;
     out.vertices.reserve(static_cast<std::size_t>(vertices) * 3);
+    if (read_uv1) out.uv1.reserve(static_cast<std::size_t>(vertices) * 2);
+    if (read_normals) out.normals.reserve(static_cast<std::size_t>(vertices) * 3);
     out.indices.reserve(static_cast<std::size_t>(triangles) * 3);
     out.triangle_material.reserve(static_cast<std::size_t>(triangles));
     std::map<std::int32_t, std::int32_t> material_slot;  // glTF material -> out.materials index
@@ -414,6 +449,8 @@ class Reader {
               out.vertices.push_back(w);
             }
           }
+          out.uv1.insert(out.uv1.end(), d.uv1.begin(), d.uv1.end());
+          if (!d.normals.empty()) place_normals(world, d.normals, out.normals);
           std::int32_t slot = -1;
           if (d.material >= 0) {
             const auto [it, added] = material_slot.emplace(d.material, static_cast<std::int32_t>(out.materials.size()));
@@ -613,11 +650,14 @@ class Reader {
       const std::string apath = member_path(p.path, "attributes");
       const Json& attributes = object_at(required(prim, "attributes", p.path), apath);
       const std::string ppath = member_path(apath, "POSITION");
-      p.positions = layout(unsigned_of(required(attributes, "POSITION", apath), ppath), ppath, /*positions=*/true);
+      p.positions = layout(unsigned_of(required(attributes, "POSITION", apath), ppath), ppath, Role::Position);
+      while (find(attributes, ("TEXCOORD_" + std::to_string(p.texcoord_sets)).c_str()) != nullptr) ++p.texcoord_sets;
+      p.uv1_accessor = find(attributes, "TEXCOORD_1");
+      p.normal_accessor = find(attributes, "NORMAL");
       u64 n = p.positions.count;
       if (const Json* i = find(prim, "indices")) {
         const std::string ipath = member_path(p.path, "indices");
-        p.indices = layout(unsigned_of(*i, ipath), ipath, /*positions=*/false);
+        p.indices = layout(unsigned_of(*i, ipath), ipath, Role::Index);
         n = p.indices->count;
       }
       p.triangles = p.mode == 4 ? n / 3 : n >= 3 ? n - 2 : 0;
@@ -744,7 +784,7 @@ class Reader {
     return v.data + offset;
   }
 
-  Layout layout(u64 index, const std::string& from, bool positions) {
+  Layout layout(u64 index, const std::string& from, Role role) {
     Layout L;
     L.path = index_path("accessors", index);
     const Json& a = element("accessors", index, from);
@@ -758,12 +798,34 @@ class Reader {
       L.normalized = n->get<bool>();
     }
     const std::string shape = string_of(required(a, "type", path), member_path(path, "type"));
-    if (positions) {
+    const auto refuse = [&](const char* what) {
+      fail(path, std::string(what) + " of " + (L.normalized ? "normalized " : "") + component_name(L.type) + " is not allowed");
+    };
+    const auto needs_quantization = [&](const char* what) {
+      fail(path, std::string(what) + " of " + (L.normalized ? "normalized " : "") + component_name(L.type) +
+                     " needs the extension KHR_mesh_quantization");
+    };
+    if (role == Role::Position) {
       if (shape != "VEC3") fail(path, "POSITION must be VEC3, not " + shape);
       if (L.type == kUnsignedInt || (L.type == kFloat && L.normalized))
         fail(path, std::string("POSITION of ") + (L.normalized ? "normalized " : "") + component_name(L.type) + " is not allowed");
       if (L.type != kFloat && !quantization_)
         fail(path, std::string("POSITION of ") + component_name(L.type) + " needs the extension KHR_mesh_quantization");
+      L.components = 3;
+    } else if (role == Role::Texcoord) {
+      // glTF 2.0, 3.7.2.1: float, or normalized UNSIGNED_BYTE / UNSIGNED_SHORT;
+      // KHR_mesh_quantization adds (un)normalized BYTE / SHORT and unnormalized unsigned ones.
+      if (shape != "VEC2") fail(path, "TEXCOORD_1 must be VEC2, not " + shape);
+      if (L.type == kUnsignedInt || (L.type == kFloat && L.normalized)) refuse("TEXCOORD_1");
+      const bool core = L.type == kFloat || ((L.type == kUnsignedByte || L.type == kUnsignedShort) && L.normalized);
+      if (!core && !quantization_) needs_quantization("TEXCOORD_1");
+      L.components = 2;
+    } else if (role == Role::Normal) {
+      // Float; KHR_mesh_quantization adds normalized BYTE / SHORT.
+      if (shape != "VEC3") fail(path, "NORMAL must be VEC3, not " + shape);
+      const bool quantized = (L.type == kByte || L.type == kShort) && L.normalized;
+      if (!(L.type == kFloat && !L.normalized) && !quantized) refuse("NORMAL");
+      if (quantized && !quantization_) needs_quantization("NORMAL");
       L.components = 3;
     } else {
       if (shape != "SCALAR") fail(path, "indices must be SCALAR, not " + shape);
@@ -833,6 +895,56 @@ class Reader {
     return out;
   }
 
+  // A primitive's TEXCOORD_1 or NORMAL accessor, checked as POSITION's is, with POSITION's count.
+  Layout attribute_layout(const Primitive& p, const Json& index, const char* name, Role role) {
+    const std::string from = member_path(member_path(p.path, "attributes"), name);
+    Layout L = layout(unsigned_of(index, from), from, role);
+    if (L.count != p.positions.count)
+      fail(L.path, std::string(name) + " of " + p.path + " has count " + std::to_string(L.count) + ", but its POSITION (" +
+                       p.positions.path + ") has " + std::to_string(p.positions.count));
+    return L;
+  }
+
+  std::vector<double> decode_finite(const Layout& L, const char* name) {
+    std::vector<double> v = values(L);
+    for (std::size_t k = 0; k < v.size(); ++k)
+      if (!std::isfinite(v[k]))
+        fail(L.path, std::string(name) + " of vertex " + std::to_string(k / static_cast<std::size_t>(L.components)) + " is not finite");
+    return v;
+  }
+
+  // Normals placed by `world`: by the inverse transpose of its 3x3 part, then made unit length.
+  // The cofactor matrix (det x the inverse transpose) of the part scaled to entries of at most
+  // 1 is used, times the sign of det, so no inverse is formed and nothing overflows; a normal
+  // that comes out of zero length (a zero normal, or a singular transform) stays (0, 0, 0).
+  static void place_normals(const Matrix4& world, const std::vector<double>& normals, std::vector<double>& out) {
+    double a[3][3];  // a[row][col]
+    double largest = 0;
+    for (int row = 0; row < 3; ++row)
+      for (int col = 0; col < 3; ++col) {
+        a[row][col] = world[col * 4 + row];
+        largest = std::max(largest, std::fabs(a[row][col]));
+      }
+    if (largest > 0)
+      for (auto& row : a)
+        for (double& x : row) x /= largest;
+    double c[3][3];  // cofactors: c[i][j] = (-1)^(i+j) minor(i, j)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+        c[i][j] = a[i1][j1] * a[i2][j2] - a[i1][j2] * a[i2][j1];
+      }
+    const double det = a[0][0] * c[0][0] + a[0][1] * c[0][1] + a[0][2] * c[0][2];
+    const double sign = det < 0 ? -1.0 : 1.0;
+    for (std::size_t k = 0; k + 2 < normals.size(); k += 3) {
+      double n[3];
+      for (int row = 0; row < 3; ++row)
+        n[row] = sign * (c[row][0] * normals[k] + c[row][1] * normals[k + 1] + c[row][2] * normals[k + 2]);
+      const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      for (const double x : n) out.push_back(length > 0 && std::isfinite(length) ? x / length : 0.0);
+    }
+  }
+
   std::vector<double> decode_positions(const Primitive& p) {
     std::vector<double> v = values(p.positions);
     for (std::size_t k = 0; k < v.size(); ++k)
@@ -883,9 +995,9 @@ class Reader {
 
 }  // namespace
 
-TriangleMesh read_gltf_bytes(std::string_view bytes, const fs::path& folder, const GltfLimits& limits) {
+TriangleMesh read_gltf_bytes(std::string_view bytes, const fs::path& folder, const GltfLimits& limits, bool with_uv) {
   try {
-    return Reader(bytes, folder, limits).read();
+    return Reader(bytes, folder, limits).read(with_uv);
   } catch (const Json::exception& e) {
     std::string what = e.what();
     for (char& c : what)
@@ -894,14 +1006,16 @@ TriangleMesh read_gltf_bytes(std::string_view bytes, const fs::path& folder, con
   }
 }
 
-TriangleMesh read_gltf(const fs::path& path, const GltfLimits& limits) {
+TriangleMesh read_gltf(const fs::path& path, const GltfLimits& limits, bool with_uv) {
   const std::string bytes = read_regular_file(path, limits.max_file_bytes);
-  return read_gltf_bytes(bytes, path.parent_path(), limits);
+  return read_gltf_bytes(bytes, path.parent_path(), limits, with_uv);
 }
 
 std::vector<MeshPart> split_by_material(const TriangleMesh& mesh) {
   std::vector<MeshPart> parts;
-  const std::size_t triangles = mesh.indices.size() / 3;
+  const std::size_t triangles = mesh.indices.size() / 3, vertices = mesh.vertices.size() / 3;
+  const bool uv1 = mesh.uv1.size() == 2 * vertices && vertices > 0;
+  const bool normals = mesh.normals.size() == 3 * vertices && vertices > 0;
   for (std::int32_t m = -1; m < static_cast<std::int32_t>(mesh.materials.size()); ++m) {
     MeshPart part;
     part.material = m;
@@ -913,6 +1027,8 @@ std::vector<MeshPart> split_by_material(const TriangleMesh& mesh) {
         if (remap[i] == std::numeric_limits<std::uint32_t>::max()) {
           remap[i] = static_cast<std::uint32_t>(part.vertices.size() / 3);
           part.vertices.insert(part.vertices.end(), mesh.vertices.begin() + 3 * i, mesh.vertices.begin() + 3 * i + 3);
+          if (uv1) part.uv1.insert(part.uv1.end(), mesh.uv1.begin() + 2 * i, mesh.uv1.begin() + 2 * i + 2);
+          if (normals) part.normals.insert(part.normals.end(), mesh.normals.begin() + 3 * i, mesh.normals.begin() + 3 * i + 3);
         }
         part.indices.push_back(remap[i]);
       }
