@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 #include <numbers>
@@ -91,6 +92,58 @@ TEST(Lightmap, PlaneUnderAUniformSkyIsExact) {
     for (int c = 0; c < kChannelCount; ++c)
       for (int i = 0; i < kShCount; ++i) EXPECT_NEAR(map.radiance[t].c[c][i], want.c[c][i], 1e-12) << t << " " << i;
   }
+}
+
+// A glTF quad of 2 x 2 m in its xz-plane, front (counter-clockwise, glTF's right-handed frame)
+// facing +Y, with TEXCOORD_0 all at one point (a material's UVs, which would overlap) and, when
+// `second`, TEXCOORD_1 spanning [0, 1]^2: base64 buffers, one file.
+std::string gltf_quad(bool second) {
+  const float positions[12] = {-1, 0, 1, 1, 0, 1, 1, 0, -1, -1, 0, -1};
+  const float uv0[8] = {0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f};
+  const float uv1[8] = {0, 1, 1, 1, 1, 0, 0, 0};
+  const std::uint16_t indices[6] = {0, 1, 2, 0, 2, 3};
+  std::string bytes(reinterpret_cast<const char*>(positions), sizeof positions);
+  bytes.append(reinterpret_cast<const char*>(uv0), sizeof uv0);
+  bytes.append(reinterpret_cast<const char*>(uv1), sizeof uv1);
+  bytes.append(reinterpret_cast<const char*>(indices), sizeof indices);
+  const std::string attributes = second ? R"("POSITION": 0, "TEXCOORD_0": 1, "TEXCOORD_1": 2)" : R"("POSITION": 0, "TEXCOORD_0": 1)";
+  return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+    "meshes": [{"primitives": [{"attributes": {)" + attributes + R"(}, "indices": 3}]}],
+    "buffers": [{"byteLength": )" + std::to_string(bytes.size()) + R"(, "uri": "data:application/octet-stream;base64,)" +
+         shpack_test::base64(bytes) + R"("}],
+    "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 32},
+                    {"buffer": 0, "byteOffset": 80, "byteLength": 32}, {"buffer": 0, "byteOffset": 112, "byteLength": 12}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, 0, -1], "max": [1, 0, 1]},
+                  {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"},
+                  {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
+                  {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"}]})";
+}
+
+TEST(Lightmap, GltfSecondUvSetUnderAUniformSkyIsExact) {
+  // The glTF quad's TEXCOORD_1 is the lightmap; its front faces +Y in Unity's frame too (the
+  // loader mirrors z and keeps the winding's side), so every texel is the closed form for +Y.
+  shpack_test::write_scene("quad_uv1.gltf", gltf_quad(true));
+  const Lightmapped b = bake_lightmap_scene("gltf_uv1", R"({
+    "environment": {"type": "gradient", "zenith": 0.4, "horizon": 0.4, "ground": 0.4},
+    "geometry": [{"type": "mesh", "name": "quad", "path": "quad_uv1.gltf", "lightmap": {"resolution": [4, 4]}}],
+    "effects": ["environment"]})");
+  ASSERT_TRUE(b.status.ok()) << b.status.message;
+  const LightmapTexels& map = b.result.maps[0];
+  EXPECT_EQ(map.used, 16u);
+  const ShL2 want = uniform_hemisphere(0.4, {0, 1, 0});
+  for (std::size_t t = 0; t < 16; ++t)
+    for (int i = 0; i < kShCount; ++i) EXPECT_NEAR(map.radiance[t].c[1][i], want.c[1][i], 1e-12) << t << " " << i;
+}
+
+TEST(Lightmap, GltfWithOnlyTexcoord0IsRefusedInOneLine) {
+  shpack_test::write_scene("quad_uv0.gltf", gltf_quad(false));
+  const Lightmapped b = bake_lightmap_scene("gltf_uv0", R"({
+    "environment": {"type": "gradient", "zenith": 0.4, "horizon": 0.4, "ground": 0.4},
+    "geometry": [{"type": "mesh", "path": "quad_uv0.gltf", "lightmap": {"resolution": [4, 4]}}],
+    "effects": ["environment"]})");
+  EXPECT_FALSE(b.status.ok());
+  EXPECT_NE(b.status.message.find("only one UV set (TEXCOORD_0)"), std::string::npos) << b.status.message;
+  EXPECT_EQ(b.status.message.find('\n'), std::string::npos);
 }
 
 TEST(Lightmap, SunAndBoxCastAnExactUmbra) {

@@ -398,14 +398,18 @@ std::vector<SceneShape> read_mesh(const SceneShape& entry, const Json& j, const 
   if (ext != ".gltf" && ext != ".glb") throw mesh_error("meshes are read from .obj, .gltf and .glb files");
   detail::TriangleMesh mesh;
   try {
-    mesh = detail::read_gltf(file);
+    mesh = detail::read_gltf(file, {}, lightmapped);
   } catch (const std::bad_alloc&) {
     throw;
   } catch (const std::exception& e) {
     throw mesh_error(e.what());
   }
   if (mesh.indices.empty()) throw mesh_error("no triangles");
-  if (lightmapped) throw mesh_error("lightmap UVs of meshes are not read yet");
+  if (lightmapped && mesh.uv1.empty())
+    throw mesh_error(mesh.texcoord_sets == 0
+                         ? "has no UV set; a lightmap needs TEXCOORD_1, a second UV set unwrapped without overlaps"
+                         : "has only one UV set (TEXCOORD_0); a lightmap needs TEXCOORD_1, a second UV set "
+                           "unwrapped without overlaps (TEXCOORD_0 is not used: its charts may overlap)");
   const bool right_handed = value_or(j, "mirror_z", true);
   std::vector<detail::MeshPart> parts = detail::split_by_material(mesh);
   for (detail::MeshPart& part : parts) {
@@ -417,6 +421,9 @@ std::vector<SceneShape> read_mesh(const SceneShape& entry, const Json& j, const 
       if (!j.contains("emission")) shape.emission = material.emission;
     }
     place_mesh(shape, part.vertices, std::move(part.indices), j, path, right_handed, mesh_error);
+    if (lightmapped)  // glTF's v runs down from the image's top, Unity's up from its bottom
+      for (std::size_t k = 0; k + 1 < part.uv1.size(); k += 2)
+        shape.uv.insert(shape.uv.end(), {static_cast<float>(part.uv1[k]), static_cast<float>(1.0 - part.uv1[k + 1])});
     shapes.push_back(std::move(shape));
   }
   return shapes;
