@@ -135,6 +135,22 @@ TEST(Lightmap, GltfSecondUvSetUnderAUniformSkyIsExact) {
     for (int i = 0; i < kShCount; ++i) EXPECT_NEAR(map.radiance[t].c[1][i], want.c[1][i], 1e-12) << t << " " << i;
 }
 
+TEST(Lightmap, ObjTextureCoordinatesAreTheLightmapUvs) {
+  // OBJ's only UV set, v up as Unity's; the quad's (v1 - v0) x (v2 - v0) is +Y, its front.
+  shpack_test::write_scene("quad.obj",
+                           "v -1 0 -1\nv -1 0 1\nv 1 0 1\nv 1 0 -1\nvt 0 0\nvt 0 1\nvt 1 1\nvt 1 0\n"
+                           "f 1/1 2/2 3/3 4/4\n");
+  const Lightmapped b = bake_lightmap_scene("obj_uv", R"({
+    "environment": {"type": "gradient", "zenith": 0.4, "horizon": 0.4, "ground": 0.4},
+    "geometry": [{"type": "mesh", "path": "quad.obj", "lightmap": {"resolution": [2, 2]}}],
+    "effects": ["environment"]})");
+  ASSERT_TRUE(b.status.ok()) << b.status.message;
+  EXPECT_EQ(b.result.maps[0].used, 4u);
+  const ShL2 want = uniform_hemisphere(0.4, {0, 1, 0});
+  for (std::size_t t = 0; t < 4; ++t)
+    for (int i = 0; i < kShCount; ++i) EXPECT_NEAR(b.result.maps[0].radiance[t].c[0][i], want.c[0][i], 1e-12);
+}
+
 TEST(Lightmap, GltfWithOnlyTexcoord0IsRefusedInOneLine) {
   shpack_test::write_scene("quad_uv0.gltf", gltf_quad(false));
   const Lightmapped b = bake_lightmap_scene("gltf_uv0", R"({

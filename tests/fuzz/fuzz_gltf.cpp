@@ -36,15 +36,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   limits.max_vertices = 1'000'000;
   limits.max_node_instances = 100'000;
   limits.max_file_bytes = 1'000'000;
-  try {
-    const auto mesh = shpack::scene::detail::read_gltf_bytes(
-        std::string_view(reinterpret_cast<const char*>(data), size), folder, limits);
-    if (mesh.indices.size() % 3 != 0) std::abort();
-    for (const std::uint32_t i : mesh.indices)
-      if (i >= mesh.vertices.size() / 3) std::abort();
-    (void)shpack::scene::detail::split_by_material(mesh);
-  } catch (const std::runtime_error& e) {
-    if (std::string_view(e.what()).find('\n') != std::string_view::npos) std::abort();
+  // Without and with the lightmap's attributes (TEXCOORD_1, NORMAL): with them, uv1 and
+  // normals are empty or parallel to the vertices, in the mesh and in every part.
+  for (const bool with_uv : {false, true}) {
+    try {
+      const auto mesh = shpack::scene::detail::read_gltf_bytes(
+          std::string_view(reinterpret_cast<const char*>(data), size), folder, limits, with_uv);
+      if (mesh.indices.size() % 3 != 0) std::abort();
+      for (const std::uint32_t i : mesh.indices)
+        if (i >= mesh.vertices.size() / 3) std::abort();
+      const std::size_t n = mesh.vertices.size() / 3;
+      if ((!mesh.uv1.empty() && mesh.uv1.size() != 2 * n) || (!mesh.normals.empty() && mesh.normals.size() != 3 * n))
+        std::abort();
+      for (const auto& part : shpack::scene::detail::split_by_material(mesh)) {
+        const std::size_t m = part.vertices.size() / 3;
+        if ((!part.uv1.empty() && part.uv1.size() != 2 * m) || (!part.normals.empty() && part.normals.size() != 3 * m))
+          std::abort();
+      }
+    } catch (const std::runtime_error& e) {
+      if (std::string_view(e.what()).find('\n') != std::string_view::npos) std::abort();
+    }
   }
   return 0;
 }

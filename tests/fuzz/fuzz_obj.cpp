@@ -13,20 +13,34 @@
 
 #include "obj_mesh.h"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+namespace {
+
+// One parse, with or without the texture coordinates (a lightmap's UVs): with them, `uv` is
+// empty or holds u, v for every vertex, each finite.
+void check(std::string_view text, bool with_uv) {
   constexpr double kMaxAbs = 1.844e18;
-  const std::string_view text(reinterpret_cast<const char*>(data), size);
   shpack::scene::detail::ObjMesh mesh;
   std::string error;
-  if (!shpack::scene::detail::parse_obj(text, kMaxAbs, mesh, error)) {
+  if (!shpack::scene::detail::parse_obj(text, kMaxAbs, mesh, error, with_uv)) {
     if (error.empty() || error.find('\n') != std::string::npos) std::abort();
     if (error.rfind("line ", 0) != 0 && error != "no faces") std::abort();
-    return 0;
+    return;
   }
   if (mesh.vertices.size() % 3 != 0 || mesh.indices.empty() || mesh.indices.size() % 3 != 0) std::abort();
   for (const double v : mesh.vertices)
     if (!std::isfinite(v) || std::fabs(v) > kMaxAbs) std::abort();
   for (const std::uint32_t i : mesh.indices)
     if (i >= mesh.vertices.size() / 3) std::abort();
+  if (!mesh.uv.empty() && (!with_uv || mesh.uv.size() != 2 * (mesh.vertices.size() / 3))) std::abort();
+  for (const double u : mesh.uv)
+    if (!std::isfinite(u)) std::abort();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  check(text, false);
+  check(text, true);
   return 0;
 }

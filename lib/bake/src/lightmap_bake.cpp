@@ -164,7 +164,7 @@ io::IoStatus bake_lightmaps(const scene::Scene& scene, const BakeOptions& option
     const LightmapRaster& r = rasters[m];
     for (std::size_t t = 0; t + 1 < r.first.size(); ++t)
       for (std::size_t k = r.first[t]; k < r.first[t + 1]; ++k) {
-        const Vec3 p = lifted(r.points[k].position, r.points[k].normal);
+        const Vec3 p = lifted(r.points[k].position, r.points[k].geometric);
         points.probes.push_back({p.x, p.y, p.z});
         normals.push_back(r.points[k].normal);
         owners.push_back({static_cast<std::uint32_t>(m), static_cast<std::uint32_t>(t)});

@@ -14,6 +14,7 @@ struct Triangle {
   std::array<Vec3, 3> p;
   std::array<std::array<double, 2>, 3> t;  // texel space
   Vec3 normal;
+  std::array<Vec3, 3> shading;  // the vertices' normals, or `normal` three times
   std::uint32_t shape = 0;
 };
 
@@ -91,7 +92,10 @@ std::array<double, 3> barycentric(const Triangle& tri, double x, double y) {
 }
 
 TexelPoint point_at(const Triangle& tri, const std::array<double, 3>& b) {
-  return {b[0] * tri.p[0] + b[1] * tri.p[1] + b[2] * tri.p[2], tri.normal};
+  Vec3 n = b[0] * tri.shading[0] + b[1] * tri.shading[1] + b[2] * tri.shading[2];
+  if (dot(n, tri.normal) < 0) n = -1.0 * n;
+  const double len = std::sqrt(dot(n, n));
+  return {b[0] * tri.p[0] + b[1] * tri.p[1] + b[2] * tri.p[2], len > 1e-6 ? (1.0 / len) * n : tri.normal, tri.normal};
 }
 
 struct SubsampleOwner {
@@ -150,6 +154,12 @@ bool rasterize_lightmap(const scene::LightmapTarget& target, const std::vector<s
         continue;
       }
       tri.normal = (1.0 / len) * n;
+      for (int c = 0; c < 3; ++c) {
+        const std::uint32_t i = shape.indices[t + c];
+        tri.shading[c] = shape.normals.size() == v.size()
+                             ? Vec3{shape.normals[3 * i], shape.normals[3 * i + 1], shape.normals[3 * i + 2]}
+                             : tri.normal;
+      }
       tris.push_back(tri);
       vertex_of_corner.insert(vertex_of_corner.end(), ids.begin(), ids.end());
     }

@@ -9,6 +9,10 @@
 // when a sliver covers none of them, the centroid of its largest clipped polygon: the texel's
 // value is the mean over its points, each standing for an equal share of the covered area.
 //
+// Normals: a mesh with shading normals (scene.h) has them interpolated by the barycentrics and
+// normalised, turned to the front's side if a vertex's normal points behind it; else the
+// triangle's own.
+//
 // Charts are the connected sets of triangles that share a vertex (same position and same UV),
 // so a UV seam separates charts; dilation and padding never cross from one chart to another.
 // Two triangles of different charts that both contain a sub-square's centre strictly inside
@@ -29,7 +33,8 @@ inline constexpr int kSubsamples = 2;  // per side: 4 points per fully covered t
 
 struct TexelPoint {
   Vec3 position;  // on the surface
-  Vec3 normal;    // unit, the triangle's front (its winding, as the ray tracer's)
+  Vec3 normal;    // unit: the shading normal (interpolated from the mesh's, on the front's side), else the geometric one
+  Vec3 geometric; // unit, the triangle's front (its winding, as the ray tracer's): the side rays leave from
 };
 
 struct LightmapRaster {

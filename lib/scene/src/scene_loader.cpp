@@ -388,11 +388,15 @@ std::vector<SceneShape> read_mesh(const SceneShape& entry, const Json& j, const 
       throw SceneError{join(path, "path"), st.message};
     detail::ObjMesh mesh;
     std::string why;
-    if (!detail::parse_obj(text, kMaxCoordinate, mesh, why)) throw mesh_error(why);
-    if (lightmapped) throw mesh_error("lightmap UVs of meshes are not read yet");
+    if (!detail::parse_obj(text, kMaxCoordinate, mesh, why, lightmapped)) throw mesh_error(why);
+    if (lightmapped && mesh.uv.empty())
+      throw mesh_error(mesh.uv_missing_line ? "line " + std::to_string(mesh.uv_missing_line) +
+                                                  ": a face without texture coordinates; a lightmap needs UVs on every face"
+                                            : "has no texture coordinates (vt); a lightmap needs UVs");
     shapes.push_back(entry);
     place_mesh(shapes.back(), mesh.vertices, std::move(mesh.indices), j, path, value_or(j, "mirror_z", false),
                mesh_error);
+    if (lightmapped) shapes.back().uv.assign(mesh.uv.begin(), mesh.uv.end());  // OBJ's v runs up, as Unity's
     return shapes;
   }
   if (ext != ".gltf" && ext != ".glb") throw mesh_error("meshes are read from .obj, .gltf and .glb files");
@@ -421,9 +425,14 @@ std::vector<SceneShape> read_mesh(const SceneShape& entry, const Json& j, const 
       if (!j.contains("emission")) shape.emission = material.emission;
     }
     place_mesh(shape, part.vertices, std::move(part.indices), j, path, right_handed, mesh_error);
-    if (lightmapped)  // glTF's v runs down from the image's top, Unity's up from its bottom
+    if (lightmapped) {  // glTF's v runs down from the image's top, Unity's up from its bottom
       for (std::size_t k = 0; k + 1 < part.uv1.size(); k += 2)
         shape.uv.insert(shape.uv.end(), {static_cast<float>(part.uv1[k]), static_cast<float>(1.0 - part.uv1[k + 1])});
+      const double z_sign = right_handed ? -1.0 : 1.0;  // normals mirror as positions do (a uniform scale keeps them)
+      for (std::size_t k = 0; k + 2 < part.normals.size(); k += 3)
+        shape.normals.insert(shape.normals.end(), {static_cast<float>(part.normals[k]), static_cast<float>(part.normals[k + 1]),
+                                                   static_cast<float>(z_sign * part.normals[k + 2])});
+    }
     shapes.push_back(std::move(shape));
   }
   return shapes;

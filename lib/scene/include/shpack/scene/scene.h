@@ -69,6 +69,9 @@ struct SceneShape {
   // The lightmap UVs (u, v per vertex, Unity's convention: (0, 0) the image's bottom left),
   // when a lightmap is asked for on this shape; empty otherwise.
   std::vector<float> uv;
+  // Unit shading normals (xyz per vertex) of a lightmapped mesh whose file has them (glTF
+  // NORMAL), in Unity's frame; empty: the triangles' own normals.
+  std::vector<float> normals;
 };
 
 // The most texels all of a scene's lightmaps may hold together, checked before any is
