@@ -7,6 +7,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <thread>
 
 #include "enum_option.h"
@@ -22,15 +23,17 @@
 namespace shpack::cli {
 namespace {
 
-// "\rshpack bake: shadows   [##########..........]  50%  5000/10000 probes", ended by a
+// "\rshpack bake: shadows   [##########..........]  50%  5000/10000 probes" (a lightmap's
+// passes: "lightmap shadows ... points"), ended by a
 // line break when the pass completes.
 void draw_progress(const char* pass, std::size_t done, std::size_t total) {
   constexpr int kWidth = 30;
   const int filled = total ? static_cast<int>(kWidth * done / total) : kWidth;
   std::string bar(filled, '#');
   bar.resize(kWidth, '.');
-  std::fprintf(stderr, "\rshpack bake: %-13s [%s] %3d%%  %zu/%zu probes", pass, bar.c_str(),
-               total ? static_cast<int>(100 * done / total) : 100, done, total);
+  const bool lightmap = std::string_view(pass).starts_with("lightmap ");
+  std::fprintf(stderr, "\rshpack bake: %-22s [%s] %3d%%  %zu/%zu %s", pass, bar.c_str(),
+               total ? static_cast<int>(100 * done / total) : 100, done, total, lightmap ? "points" : "probes");
   if (done == total) std::fputc('\n', stderr);
   std::fflush(stderr);
 }

@@ -152,6 +152,13 @@ io::IoStatus bake_lightmaps(const scene::Scene& scene, const BakeOptions& option
     if (!rasterize_lightmap(scene.lightmaps[m], scene.geometry, rasters[m], why))
       return io::IoStatus::error(io::IoErrc::BadDocument, scene.file, why);
   }
+  // Progress names the lightmap's passes as such ("lightmap bounce"), counting points.
+  BakeOptions lightmap_options = options;
+  if (options.progress)
+    lightmap_options.progress = [&options](const char* pass, std::size_t done, std::size_t total) {
+      const std::string name = std::string("lightmap ") + pass;
+      options.progress(name.c_str(), done, total);
+    };
   // Every map's points in one bake: they share the tracer and the environment.
   scene::Scene points = scene;
   points.probes.clear();
@@ -173,7 +180,7 @@ io::IoStatus bake_lightmaps(const scene::Scene& scene, const BakeOptions& option
   // Validity first; then only the points that count are baked (gather_texels): a point inside
   // geometry would chase its error target in the dark to settings.max_samples for nothing.
   std::vector<ProbeValidity> validity;
-  if (io::IoStatus st = surface_validity(points, options, validity, result.validity_cost, result.geometry); !st.ok())
+  if (io::IoStatus st = surface_validity(points, lightmap_options, validity, result.validity_cost, result.geometry); !st.ok())
     return st;
   const std::vector<bool> wanted = points_to_bake(scene, rasters, validity);
   scene::Scene chosen = points;
@@ -193,7 +200,7 @@ io::IoStatus bake_lightmaps(const scene::Scene& scene, const BakeOptions& option
     }
   BakeResult part;
   const auto label = [&](std::size_t k) { return texel_label(scene, rasters, owners[index_of[k]]); };
-  if (io::IoStatus st = bake_surface_points(chosen, chosen_normals, target_scale, label, options, part); !st.ok()) return st;
+  if (io::IoStatus st = bake_surface_points(chosen, chosen_normals, target_scale, label, lightmap_options, part); !st.ok()) return st;
   BakeResult baked;  // every point: the chosen ones' results, zero for the others (never read)
   baked.radiance.assign(points.probes.size(), ShL2{});
   baked.sampling.assign(points.probes.size(), {});
