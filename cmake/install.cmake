@@ -94,3 +94,14 @@ endif()
 # The licence of everything above, where Debian keeps a package's (share/doc/<package>).
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/NOTICE
   DESTINATION ${CMAKE_INSTALL_DOCDIR})
+
+# Everything the rules above install, as one target: `cmake --install` of a tree in which
+# only some targets were built (CI builds only what it runs) fails on the first missing file,
+# so a build that is to be installed builds this (python.installed_module needs it).
+add_custom_target(shpack_installable)
+add_dependencies(shpack_installable shpack_core shpack_c shpack shpack_oiio)
+foreach(optional shpack_man shpack_python)
+  if(TARGET ${optional})
+    add_dependencies(shpack_installable ${optional})
+  endif()
+endforeach()

@@ -29,8 +29,9 @@ step cmake --build build-fuzz -j"$(nproc)" --target shpack_fuzzers
 step ctest --test-dir build-fuzz --output-on-failure -j2 -L fuzz
 
 # The same Release build holds the Python module (python/), tested with Debian's
-# /usr/bin/python3 and NumPy against the command it was built with (label python).
+# /usr/bin/python3 and NumPy against the command it was built with, and installed from it
+# (label python): shpack_installable is everything `cmake --install` copies.
 cmake -S . -B build-large -DCMAKE_BUILD_TYPE=Release -DSHPACK_WERROR=ON -DSHPACK_BUILD_BENCH=OFF \
   -DSHPACK_BUILD_PYTHON=ON
-step cmake --build build-large -j"$(nproc)" --target shpack shpack_large_tests shpack_python
+step cmake --build build-large -j"$(nproc)" --target shpack_installable shpack_large_tests
 step ctest --test-dir build-large --output-on-failure -L 'large|python'
