@@ -54,13 +54,15 @@ int run_scene_bench(const std::vector<std::string>& scenes, const BenchOptions& 
   if (options.quick) {
     settings.counts = {64, 256, 1024};
     settings.reference_samples = 16384;
+    settings.lightmap_side = 4;
   }
   std::vector<study::SceneStudyRecord> records;
   bool all_ok = true;
   for (const std::string& scene : scenes) {
     const io::IoStatus st = study::run_scene_study(scene, settings, records, [](const study::SceneStudyRecord& r) {
-      std::fprintf(stderr, "bench: %s %s %s %.0f samples: %.3g CPU ms, err max %.3g%%\n", r.scene.c_str(), r.effect.c_str(),
-                   r.estimator.c_str(), r.samples, r.cpu_ms, r.err_max_pct);
+      std::fprintf(stderr, "bench: %s %s %s %s %.0f samples: %.3g CPU ms, err max %.3g%%, %.3g %s/s\n", r.scene.c_str(),
+                   r.receivers.c_str(), r.effect.c_str(), r.estimator.c_str(), r.samples, r.cpu_ms, r.err_max_pct,
+                   r.per_s, r.receivers.c_str());
     });
     if (!st.ok()) {
       report_error(st.message);

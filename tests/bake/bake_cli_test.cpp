@@ -223,4 +223,36 @@ TEST(BakeCli, BenchOfASceneMeasuresEachEffectAgainstAReference) {
   EXPECT_NE(err.find("give scenes (.json) or maps, not both"), std::string::npos) << err;
 }
 
+TEST(BakeCli, BenchOfALightmapSceneMeasuresItsTexelsBesideItsProbes) {
+  // A sun 40 degrees wide over a floor half under a box's edge 1 above it: the penumbra is
+  // 2 tan(20 deg) = 0.73 wide, so texels of the 8 x 8 lightmap (4 x 4 in a quick study, 0.5
+  // wide) sample it at their points; the rest of the floor is exact (fully lit or umbra).
+  const fs::path scene = shpack_test::write_scene("cli_bench_lightmap.json", R"({"probes": [[0.1, 0.5, 0]],
+    "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 1, "angular_diameter_deg": 40}],
+    "geometry": [{"type": "box", "min": [-100, 1, -100], "max": [0, 2, 100]},
+                 {"type": "plane", "name": "floor", "position": [0, 0, 0], "right": [0, 0, 1], "up": [1, 0, 0],
+                  "size": [2, 2], "lightmap": {"resolution": [8, 8]}}],
+    "effects": ["direct", "shadows"]})");
+  const fs::path out = shpack_test::scene_scratch() / "cli_bench_lightmap.out";
+  std::string err;
+  ASSERT_EQ(run("bench " + scene.string() + " --quick --scene-seeds 2 --json > " + out.string(), err), 0) << err;
+  const nlohmann::json records = nlohmann::json::parse(std::ifstream(out));
+  // shadows for each receiver kind: 3 counts for each of the two estimators, and the settings.
+  ASSERT_EQ(records.size(), 14u) << records.dump();
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const auto& r = records[i];
+    EXPECT_EQ(r.at("receivers"), i < 7 ? "probes" : "texels") << r.dump();
+    EXPECT_EQ(r.at("count"), i < 7 ? 1u : 16u) << r.dump();
+    EXPECT_GT(r.at("receivers_per_s").get<double>(), 0.0) << r.dump();
+    EXPECT_EQ(r.at("effect"), "shadows");
+  }
+  // The worst texel's error falls with samples (64 -> 1024: by 4 in expectation, for a
+  // 1/sqrt(N) rate; far more than the spread of an RMS over two seeds), and the settings
+  // meet their target.
+  EXPECT_LT(records[9].at("err_max_pct").get<double>(), 0.5 * records[7].at("err_max_pct").get<double>())
+      << records.dump();
+  EXPECT_EQ(records[13].at("estimator"), "settings");
+  EXPECT_LT(records[13].at("error_estimate_pct").get<double>(), 1.0);
+}
+
 }  // namespace

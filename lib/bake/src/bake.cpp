@@ -131,9 +131,37 @@ struct Engine {
   const std::vector<Vec3d>* normals = nullptr;
   std::function<std::string(std::size_t)> receiver_label;  // how messages name receiver k
   std::vector<ShL2> environment_part;  // surfaces: each one's environment over its hemisphere
-  // Per receiver, its share of settings.target_error_pct (surface points averaged into a
-  // texel may each miss it by the square root of their count); null: the target itself.
-  const std::vector<double>* target_scale = nullptr;
+  // Surface points averaged into one value (a texel's): per receiver, its group; null: each
+  // its own. The target is the group mean's: with K points each meeting sqrt(K) times the
+  // target against the group's mean light m (the pilot's, pooled by pool_pilot), the mean's
+  // error is sqrt(sum e_k^2) / K <= sqrt(K (sqrt(K) t m)^2) / K = t m. Against each point's
+  // own light instead, a texel across a shadow's edge would miss it: sqrt(K sum m_k^2) /
+  // sum m_k > 1 by Cauchy-Schwarz unless the points' lights are equal.
+  const std::vector<std::uint32_t>* groups = nullptr;
+  std::vector<double> target_scale;  // per receiver, sqrt(K) of its group; empty: 1
+
+  // After the pilot: each grouped receiver's pilot becomes its group's mean, and its target
+  // scale sqrt(K).
+  void pool_pilot() {
+    if (!groups || groups->empty()) return;
+    std::vector<std::uint32_t> ids = *groups;  // the distinct groups, for a dense index
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    std::vector<std::size_t> dense(groups->size());
+    for (std::size_t k = 0; k < groups->size(); ++k)
+      dense[k] = static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), (*groups)[k]) - ids.begin());
+    std::vector<ShL2> sum(ids.size());
+    std::vector<double> members(ids.size(), 0.0);
+    for (std::size_t k = 0; k < groups->size(); ++k) {
+      add_scaled(sum[dense[k]], pilot[k], 1.0);
+      members[dense[k]] += 1;
+    }
+    target_scale.resize(groups->size());
+    for (std::size_t k = 0; k < groups->size(); ++k) {
+      pilot[k] = scaled(sum[dense[k]], 1.0 / members[dense[k]]);
+      target_scale[k] = std::sqrt(members[dense[k]]);
+    }
+  }
 
   Engine(const scene::Scene& s, const BakeOptions& o, unsigned t) : scene(s), options(o), threads(t) {}
 
@@ -288,7 +316,7 @@ struct Engine {
   // pilot, kPilotSamples.
   SamplePlan plan(int fixed, std::size_t k) const {
     if (piloting) return {0, kPilotSamples, kPilotSamples, false};
-    const double target = scene.settings.target_error_pct * (target_scale ? (*target_scale)[k] : 1.0);
+    const double target = scene.settings.target_error_pct * (target_scale.empty() ? 1.0 : target_scale[k]);
     return {target, static_cast<std::uint64_t>(std::max(1, fixed)),
             static_cast<std::uint64_t>(std::max(1, scene.settings.max_samples))};
   }
@@ -750,6 +778,7 @@ IoStatus run_effects(Engine& engine, BakeResult& result) {
       engine.piloting = true;
       sample_effects();
       engine.piloting = false;
+      engine.pool_pilot();
     }
     sample_effects();
   } else {
@@ -825,14 +854,14 @@ IoStatus surface_validity(const scene::Scene& points, const BakeOptions& options
 }
 
 IoStatus bake_surface_points(const scene::Scene& points, const std::vector<Vec3d>& normals,
-                             const std::vector<double>& target_scale,
+                             const std::vector<std::uint32_t>& group,
                              const std::function<std::string(std::size_t)>& label, const BakeOptions& options,
                              BakeResult& out) {
   try {
     BakeResult result;
     Engine engine(points, options, thread_count(options));
     engine.normals = &normals;
-    engine.target_scale = &target_scale;
+    engine.groups = &group;
     engine.receiver_label = label;
     if (IoStatus st = run_effects(engine, result); !st.ok()) return st;
     result.validity.assign(points.probes.size(), ProbeValidity{});

@@ -39,6 +39,29 @@ ChannelError point_error(const BakeResult& baked, std::size_t k) {
   return all;
 }
 
+// The mean of the points' values.
+template <class Value>
+ShL2 mean_of(const std::vector<std::size_t>& points, const Value& value) {
+  ShL2 sum;
+  for (const std::size_t k : points)
+    for (int c = 0; c < kChannelCount; ++c)
+      for (int i = 0; i < kShCount; ++i) sum.c[c][i] += value(k).c[c][i];
+  return scaled(sum, 1.0 / static_cast<double>(points.size()));
+}
+
+// The error of a mean of K independent estimates, sqrt(sum e_k^2) / K per channel.
+template <class Error>
+ChannelError error_of_mean(const std::vector<std::size_t>& points, const Error& error) {
+  ChannelError err2{};
+  for (const std::size_t k : points) {
+    const ChannelError e = error(k);
+    for (int c = 0; c < kChannelCount; ++c) err2[c] += e[c] * e[c];
+  }
+  ChannelError err{};
+  for (int c = 0; c < kChannelCount; ++c) err[c] = std::sqrt(err2[c]) / static_cast<double>(points.size());
+  return err;
+}
+
 // A texel's value, error and validity from its points. Points inside geometry (backface
 // fraction above the threshold: the part of the floor a box stands on) do not count while
 // the texel has any other; a texel with none other is invalid, for dilation. The value is the
@@ -56,6 +79,11 @@ void gather_texels(const scene::Scene& scene, const LightmapRaster& raster, cons
   map.backface.assign(texels, 0.0f);
   map.degenerate = raster.degenerate;
   invalid.assign(texels, false);
+  const bool parts = !baked.effects.empty();
+  if (parts) {
+    map.effects.assign(texels, {});
+    map.sampling.assign(texels, {});
+  }
   const double threshold = scene.settings.validity_threshold;
   for (std::size_t t = 0; t < texels; ++t) {
     const std::size_t a = first_point + raster.first[t], b = first_point + raster.first[t + 1];
@@ -66,21 +94,24 @@ void gather_texels(const scene::Scene& scene, const LightmapRaster& raster, cons
       backface += baked.validity[k].backface_fraction;
       any_valid = any_valid || baked.validity[k].backface_fraction <= threshold;
     }
-    ShL2 sum;
-    ChannelError err2{};
-    double count = 0;
-    for (std::size_t k = a; k < b; ++k) {
-      if (any_valid && baked.validity[k].backface_fraction > threshold) continue;
-      for (int c = 0; c < kChannelCount; ++c)
-        for (int i = 0; i < kShCount; ++i) sum.c[c][i] += baked.radiance[k].c[c][i];
-      const ChannelError e = point_error(baked, k);
-      for (int c = 0; c < kChannelCount; ++c) err2[c] += e[c] * e[c];
-      ++count;
-    }
-    map.radiance[t] = scaled(sum, 1.0 / count);
-    ChannelError err{};
-    for (int c = 0; c < kChannelCount; ++c) err[c] = std::sqrt(err2[c]) / count;
+    std::vector<std::size_t> counted;
+    for (std::size_t k = a; k < b; ++k)
+      if (!any_valid || baked.validity[k].backface_fraction <= threshold) counted.push_back(k);
+    map.radiance[t] = mean_of(counted, [&](std::size_t k) -> const ShL2& { return baked.radiance[k]; });
+    const ChannelError err = error_of_mean(counted, [&](std::size_t k) { return point_error(baked, k); });
     map.error_pct[t] = static_cast<float>(error_pct(err, map.radiance[t]));
+    if (parts)
+      for (std::size_t e = 0; e < kEffectCount; ++e) {
+        map.effects[t][e] = mean_of(counted, [&](std::size_t k) -> const ShL2& { return baked.effects[k][e]; });
+        EffectSampling& s = map.sampling[t][e];
+        s.error = error_of_mean(counted, [&](std::size_t k) { return baked.sampling[k][e].error; });
+        s.error_pct = error_pct(s.error, map.radiance[t]);
+        for (const std::size_t k : counted) {
+          s.samples += baked.sampling[k][e].samples;
+          s.capped = s.capped || baked.sampling[k][e].capped;
+        }
+        s.samples /= counted.size();
+      }
     map.backface[t] = static_cast<float>(backface / static_cast<double>(b - a));
     map.state[t] = TexelState::Baked;
     invalid[t] = !any_valid;
@@ -118,16 +149,15 @@ std::vector<bool> points_to_bake(const scene::Scene& scene, const std::vector<Li
   return wanted;
 }
 
-// For each point, how many points of its texel are baked.
-std::vector<std::size_t> baked_per_texel(const std::vector<LightmapRaster>& rasters, const std::vector<PointOwner>& owners,
-                                         const std::vector<bool>& wanted) {
-  std::vector<std::vector<std::size_t>> per_texel(rasters.size());
-  for (std::size_t m = 0; m < rasters.size(); ++m) per_texel[m].assign(rasters[m].first.size(), 0);
-  for (std::size_t k = 0; k < owners.size(); ++k)
-    if (wanted[k]) ++per_texel[owners[k].map][owners[k].texel];
-  std::vector<std::size_t> out(owners.size());
-  for (std::size_t k = 0; k < owners.size(); ++k) out[k] = std::max<std::size_t>(1, per_texel[owners[k].map][owners[k].texel]);
-  return out;
+// Where each map's texels start in one numbering of every map's texels.
+std::vector<std::uint32_t> first_texels(const std::vector<LightmapRaster>& rasters) {
+  std::vector<std::uint32_t> first;
+  std::uint32_t next = 0;
+  for (const LightmapRaster& r : rasters) {
+    first.push_back(next);
+    next += static_cast<std::uint32_t>(r.first.size() - 1);
+  }
+  return first;
 }
 
 void add_costs(std::array<EffectCost, kEffectCount>& into, const std::array<EffectCost, kEffectCount>& from) {
@@ -187,26 +217,28 @@ io::IoStatus bake_lightmaps(const scene::Scene& scene, const BakeOptions& option
   chosen.probes.clear();
   std::vector<Vec3> chosen_normals;
   std::vector<std::size_t> index_of;  // chosen point -> point
-  // A texel of K baked points has the error sqrt(sum e_k^2) / K (gather_texels): each point
-  // meeting sqrt(K) times the target gives the texel the target itself.
-  std::vector<double> target_scale;
-  const std::vector<std::size_t> counts = baked_per_texel(rasters, owners, wanted);
+  // The target is each texel's (gather_texels averages its baked points): a group per texel.
+  std::vector<std::uint32_t> texel_of;
+  const std::vector<std::uint32_t> first_texel = first_texels(rasters);
   for (std::size_t k = 0; k < points.probes.size(); ++k)
     if (wanted[k]) {
       chosen.probes.push_back(points.probes[k]);
       chosen_normals.push_back(normals[k]);
       index_of.push_back(k);
-      target_scale.push_back(std::sqrt(static_cast<double>(counts[k])));
+      texel_of.push_back(first_texel[owners[k].map] + owners[k].texel);
     }
   BakeResult part;
   const auto label = [&](std::size_t k) { return texel_label(scene, rasters, owners[index_of[k]]); };
-  if (io::IoStatus st = bake_surface_points(chosen, chosen_normals, target_scale, label, lightmap_options, part); !st.ok()) return st;
+  if (io::IoStatus st = bake_surface_points(chosen, chosen_normals, texel_of, label, lightmap_options, part); !st.ok())
+    return st;
   BakeResult baked;  // every point: the chosen ones' results, zero for the others (never read)
   baked.radiance.assign(points.probes.size(), ShL2{});
   baked.sampling.assign(points.probes.size(), {});
+  if (options.keep_effects) baked.effects.assign(points.probes.size(), {});
   for (std::size_t c = 0; c < index_of.size(); ++c) {
     baked.radiance[index_of[c]] = part.radiance[c];
     baked.sampling[index_of[c]] = part.sampling[c];
+    if (options.keep_effects) baked.effects[index_of[c]] = part.effects[c];
   }
   baked.validity = std::move(validity);
   baked.costs = part.costs;

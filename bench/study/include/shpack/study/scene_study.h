@@ -10,6 +10,11 @@
 // max over 1024 directions (accuracy.h), in % of the probe's mean E/pi in the reference, the
 // worst probe; against the effect's own CPU time (its pass, all threads: what it costs, and
 // what a loaded machine disturbs least).
+//
+// A scene with lightmaps is studied twice: its probes (if any), and its lightmaps' texels
+// (lightmap_bake.h), each lightmap at most lightmap_side texels a side, the same way, texel
+// for texel (the Baked texels of both bakes: dilated and padded ones only copy). Each record
+// also gives the receivers per second of the whole bake (wall time, every effect).
 #pragma once
 
 #include <cstdint>
@@ -23,22 +28,31 @@
 namespace shpack::study {
 
 struct SceneStudySettings {
-  std::vector<int> counts = {64, 256, 1024, 4096};  // samples per probe (per light)
+  std::vector<int> counts = {64, 256, 1024, 4096};  // samples per probe or texel point (per light)
   unsigned seeds = 4;                               // bakes per count and estimator
   int reference_samples = 65536;
   unsigned threads = 0;                             // 0: all cores
+  std::uint32_t lightmap_side = 16;                 // each lightmap at most this many texels a side
 };
+
+enum class Receiver { Probes, Texels };
 
 struct SceneStudyRecord {
   std::string scene;      // the file's name
+  std::string receivers;  // "probes", or "texels" (of every lightmap, at the study's size)
+  std::size_t count = 0;  // receivers measured (texels: those baked, not dilated or padded)
   std::string effect;     // "shadows", "sky_occlusion", "emission", "bounce"
   std::string estimator;  // "next-events", "directions", "settings"
   double samples = 0;     // per probe: the fixed count, or for "settings" the mean taken
   unsigned seeds = 0;
   double cpu_ms = 0;     // median over the seeds of the effect's CPU time (all threads: the cost)
+  double per_s = 0;      // median over the seeds of receivers per second of the whole bake's wall time
   // Over the seeds, of the worst probe's error (% of its mean E/pi): the RMS (the expected
   // error) and the largest; and the worst probe's own error estimate, its mean over the seeds.
   double err_max_pct = 0, err_worst_pct = 0, estimate_pct = 0;
+  // The reference's own error estimate, its worst receiver: the floor below which a measured
+  // error is the reference's noise rather than the run's.
+  double reference_estimate_pct = 0;
 };
 
 // Runs the study; records in the order effect, estimator, count. `progress` (may be empty)

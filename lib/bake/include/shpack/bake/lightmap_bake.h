@@ -11,6 +11,7 @@
 // Deterministic for any thread count, as the probe bake.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -27,6 +28,12 @@ struct LightmapTexels {
   std::vector<float> coverage;        // covered share of the texel's square
   std::vector<float> error_pct;       // per texel, % of its own mean E/pi (Baked texels)
   std::vector<float> backface;        // per texel, mean backface fraction of its points
+  // Per Baked texel and effect, as the probes' BakeResult::effects and ::sampling (the mean
+  // of its points; samples per point, their mean; the error that of the mean), when
+  // BakeOptions::keep_effects; zero for the other texels (dilation and padding fill only
+  // `radiance`).
+  std::vector<std::array<ShL2, kEffectCount>> effects;
+  std::vector<std::array<EffectSampling, kEffectCount>> sampling;
   std::uint64_t points = 0;           // baked points
   std::uint64_t degenerate = 0;       // triangles without area, skipped
   std::uint64_t used = 0, dilated = 0, padded = 0, invalid_kept = 0;
