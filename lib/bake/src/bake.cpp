@@ -141,25 +141,18 @@ struct Engine {
   std::vector<double> target_scale;  // per receiver, sqrt(K) of its group; empty: 1
 
   // After the pilot: each grouped receiver's pilot becomes its group's mean, and its target
-  // scale sqrt(K).
+  // scale sqrt(K). A group's receivers are consecutive (bake_surface_points).
   void pool_pilot() {
-    if (!groups || groups->empty()) return;
-    std::vector<std::uint32_t> ids = *groups;  // the distinct groups, for a dense index
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    std::vector<std::size_t> dense(groups->size());
-    for (std::size_t k = 0; k < groups->size(); ++k)
-      dense[k] = static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), (*groups)[k]) - ids.begin());
-    std::vector<ShL2> sum(ids.size());
-    std::vector<double> members(ids.size(), 0.0);
-    for (std::size_t k = 0; k < groups->size(); ++k) {
-      add_scaled(sum[dense[k]], pilot[k], 1.0);
-      members[dense[k]] += 1;
-    }
+    if (!groups) return;
     target_scale.resize(groups->size());
-    for (std::size_t k = 0; k < groups->size(); ++k) {
-      pilot[k] = scaled(sum[dense[k]], 1.0 / members[dense[k]]);
-      target_scale[k] = std::sqrt(members[dense[k]]);
+    for (std::size_t a = 0, b = 0; a < groups->size(); a = b) {
+      ShL2 sum;
+      for (b = a; b < groups->size() && (*groups)[b] == (*groups)[a]; ++b) add_scaled(sum, pilot[b], 1.0);
+      const double members = static_cast<double>(b - a);
+      for (std::size_t k = a; k < b; ++k) {
+        pilot[k] = scaled(sum, 1.0 / members);
+        target_scale[k] = std::sqrt(members);
+      }
     }
   }
 

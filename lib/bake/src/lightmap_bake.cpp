@@ -217,7 +217,8 @@ io::IoStatus bake_lightmaps(const scene::Scene& scene, const BakeOptions& option
   chosen.probes.clear();
   std::vector<Vec3> chosen_normals;
   std::vector<std::size_t> index_of;  // chosen point -> point
-  // The target is each texel's (gather_texels averages its baked points): a group per texel.
+  // The target is each texel's (gather_texels averages its baked points): a group per texel,
+  // its points consecutive (texel by texel, map after map).
   std::vector<std::uint32_t> texel_of;
   const std::vector<std::uint32_t> first_texel = first_texels(rasters);
   for (std::size_t k = 0; k < points.probes.size(); ++k)

@@ -22,8 +22,9 @@ io::IoStatus surface_validity(const scene::Scene& points, const BakeOptions& opt
 // rays leaving them do not meet it; normals[k] is point k's unit normal; label(k) names it in
 // messages. Settings (seed, samples, target) are the scene's; the stream of point k is keyed
 // by k, so the caller passes the points in an order of their own, independent of threads.
-// group[k] is the value point k is averaged into (a texel): settings.target_error_pct is
-// the target of each group's mean, not of each point (bake.cpp, Engine::groups).
+// group[k] is the value point k is averaged into (a texel), the points of a group consecutive:
+// settings.target_error_pct is the target of each group's mean, not of each point (bake.cpp,
+// Engine::groups).
 io::IoStatus bake_surface_points(const scene::Scene& points, const std::vector<Vec3d>& normals,
                                  const std::vector<std::uint32_t>& group,
                                  const std::function<std::string(std::size_t)>& label, const BakeOptions& options,
