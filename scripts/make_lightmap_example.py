@@ -4,7 +4,8 @@
 A 6 m floor and a 1 m box standing on it, as one glTF 2.0 mesh (glTF's frame: right-handed,
 +Y up) with POSITION, NORMAL, TEXCOORD_0 (each face's own square) and TEXCOORD_1, the
 lightmap UVs: six charts (the floor and the box's five visible faces) packed without overlap
-into [0, 1]^2 with gaps of 0.03 (two texels at 64 x 64, the default padding), in glTF's UV
+into [0, 1]^2 with gaps of 0.04 (2.56 texels at 64 x 64: no texel holds two charts, and the
+default padding of 2 rings fits), in glTF's UV
 convention (v down from the top). bench/scenes/box_lightmap.json bakes its lightmap.
 
 Standard library only; run from anywhere: python3 scripts/make_lightmap_example.py
@@ -18,17 +19,17 @@ import struct
 # and its chart's square in TEXCOORD_1 (u0, v0, size).
 FACES = [
     # floor, y = 0, facing +y
-    ([(-3, 0, 3), (3, 0, 3), (3, 0, -3), (-3, 0, -3)], (0, 1, 0), (0.03, 0.03, 0.60)),
+    ([(-3, 0, 3), (3, 0, 3), (3, 0, -3), (-3, 0, -3)], (0, 1, 0), (0.04, 0.04, 0.60)),
     # box top, y = 1
-    ([(-0.5, 1, 0.5), (0.5, 1, 0.5), (0.5, 1, -0.5), (-0.5, 1, -0.5)], (0, 1, 0), (0.66, 0.03, 0.30)),
+    ([(-0.5, 1, 0.5), (0.5, 1, 0.5), (0.5, 1, -0.5), (-0.5, 1, -0.5)], (0, 1, 0), (0.68, 0.04, 0.28)),
     # +x side
-    ([(0.5, 0, 0.5), (0.5, 0, -0.5), (0.5, 1, -0.5), (0.5, 1, 0.5)], (1, 0, 0), (0.66, 0.36, 0.30)),
+    ([(0.5, 0, 0.5), (0.5, 0, -0.5), (0.5, 1, -0.5), (0.5, 1, 0.5)], (1, 0, 0), (0.68, 0.36, 0.28)),
     # -x side
-    ([(-0.5, 0, -0.5), (-0.5, 0, 0.5), (-0.5, 1, 0.5), (-0.5, 1, -0.5)], (-1, 0, 0), (0.03, 0.66, 0.30)),
+    ([(-0.5, 0, -0.5), (-0.5, 0, 0.5), (-0.5, 1, 0.5), (-0.5, 1, -0.5)], (-1, 0, 0), (0.04, 0.68, 0.28)),
     # +z side
-    ([(-0.5, 0, 0.5), (0.5, 0, 0.5), (0.5, 1, 0.5), (-0.5, 1, 0.5)], (0, 0, 1), (0.36, 0.66, 0.30)),
+    ([(-0.5, 0, 0.5), (0.5, 0, 0.5), (0.5, 1, 0.5), (-0.5, 1, 0.5)], (0, 0, 1), (0.36, 0.68, 0.28)),
     # -z side
-    ([(0.5, 0, -0.5), (-0.5, 0, -0.5), (-0.5, 1, -0.5), (0.5, 1, -0.5)], (0, 0, -1), (0.66, 0.66, 0.30)),
+    ([(0.5, 0, -0.5), (-0.5, 0, -0.5), (-0.5, 1, -0.5), (0.5, 1, -0.5)], (0, 0, -1), (0.68, 0.68, 0.28)),
 ]
 CORNER_UV = [(0, 1), (1, 1), (1, 0), (0, 0)]  # a face's square, v down (glTF)
 

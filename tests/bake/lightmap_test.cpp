@@ -349,6 +349,33 @@ TEST(Lightmap, UnusedTexelsAreMarkedAndChartsPadded) {
   EXPECT_EQ(raster.chart[7], -1);
 }
 
+TEST(Lightmap, TexelWhereTwoChartsMeetHoldsOnlyTheOneCoveringMostOfIt) {
+  // Two charts side by side in the atlas, u in [0, 0.6] and [0.6, 1], one texel over both; on
+  // the mesh they are 5 m apart (y = 0 and y = 5). The texel is chart A's (0.6 of it): its
+  // points are the sub-square centres A contains (u = 0.25, two of them), none of B's, whose
+  // light is another surface's. Its coverage is A's share, 0.6 (clipped areas, exact up to
+  // float UVs: 1e-6).
+  scene::SceneShape two;
+  two.label = "geometry[0]";
+  two.vertices = {0, 0, 0, 0.6f, 0, 0, 0.6f, 0, 1, 0, 0, 1, 0.6f, 5, 0, 1, 5, 0, 1, 5, 1, 0.6f, 5, 1};
+  two.indices = {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7};
+  two.uv = {0, 0, 0.6f, 0, 0.6f, 1, 0, 1, 0.6f, 0, 1, 0, 1, 1, 0.6f, 1};
+  scene::LightmapTarget target;
+  target.label = "geometry[0]";
+  target.width = target.height = 1;
+  target.shapes = {0};
+  LightmapRaster raster;
+  std::string error;
+  ASSERT_TRUE(rasterize_lightmap(target, {two}, raster, error)) << error;
+  EXPECT_NEAR(raster.coverage[0], 0.6, 1e-6);
+  EXPECT_EQ(raster.shared, 1u);
+  ASSERT_EQ(raster.points.size(), 2u);
+  for (const TexelPoint& p : raster.points) {
+    EXPECT_EQ(p.position.y, 0.0);
+    EXPECT_NEAR(p.position.x, 0.25, 1e-6);
+  }
+}
+
 TEST(Lightmap, OverlappingChartsAndBadUvsAreRefused) {
   scene::SceneShape two;
   two.label = "geometry[0] 'quad'";
@@ -412,8 +439,9 @@ namespace {
 
 TEST(Lightmap, BundledGltfExampleHasSixChartsThatCoverTheirArea) {
   // bench/scenes/box_lightmap.json (scripts/make_lightmap_example.py): a floor of 0.60 x 0.60
-  // of the UV square and five box faces of 0.30 x 0.30 each, so the clipped coverage of a
-  // 64 x 64 map is 64^2 (0.36 + 5 x 0.09) = 3317.76 texels, exactly up to float rounding.
+  // of the UV square and five box faces of 0.28 x 0.28 each, 0.04 (2.56 texels) apart, so no
+  // texel holds two charts and the clipped coverage of a 64 x 64 map is
+  // 64^2 (0.36 + 5 x 0.0784) = 3080.192 texels, exactly up to float rounding.
   scene::Scene scene;
   const io::IoStatus st = scene::load_scene(std::string(SHPACK_SOURCE_DIR) + "/bench/scenes/box_lightmap.json", scene);
   ASSERT_TRUE(st.ok()) << st.message;
@@ -423,7 +451,8 @@ TEST(Lightmap, BundledGltfExampleHasSixChartsThatCoverTheirArea) {
   ASSERT_TRUE(rasterize_lightmap(scene.lightmaps[0], scene.geometry, raster, error)) << error;
   double covered = 0;
   for (const float c : raster.coverage) covered += c;
-  EXPECT_NEAR(covered, 4096 * (0.36 + 5 * 0.09), 1e-2);
+  EXPECT_NEAR(covered, 4096 * (0.36 + 5 * 0.0784), 1e-2);
+  EXPECT_EQ(raster.shared, 0u);
   std::vector<std::int32_t> charts(raster.chart.begin(), raster.chart.end());
   std::sort(charts.begin(), charts.end());
   charts.erase(std::unique(charts.begin(), charts.end()), charts.end());

@@ -78,6 +78,7 @@ void gather_texels(const scene::Scene& scene, const LightmapRaster& raster, cons
   map.error_pct.assign(texels, 0.0f);
   map.backface.assign(texels, 0.0f);
   map.degenerate = raster.degenerate;
+  map.shared = raster.shared;
   invalid.assign(texels, false);
   const bool parts = !baked.effects.empty();
   if (parts) {

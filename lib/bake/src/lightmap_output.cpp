@@ -147,7 +147,7 @@ std::string lightmap_sidecar(const scene::Scene& scene, const scene::LightmapTar
     for (const char* g : {"SHBr", "SHBg", "SHBb", "SHC"}) files[g] = target.name + "." + std::string(g) + ".exr";
   files["texels"] = target.name + ".texels.exr";
   j["files"] = files;
-  j["texels_channels"] = {{"R", "covered share of the texel"},
+  j["texels_channels"] = {{"R", "the share of the texel its chart covers"},
                           {"G", "state: 0 unused, 1 baked, 2 dilated, 3 padding"},
                           {"B", "error estimate, % of the texel's mean E/pi (about 95 % confidence)"},
                           {"A", "backface fraction of its points"}};
@@ -155,7 +155,8 @@ std::string lightmap_sidecar(const scene::Scene& scene, const scene::LightmapTar
   for (std::size_t t = 0; t < map.state.size(); ++t)
     if (map.state[t] == TexelState::Baked) errors.push_back(map.error_pct[t]);
   j["texels"] = {{"used", map.used},       {"dilated", map.dilated},   {"padding", map.padded},
-                 {"invalid_kept", map.invalid_kept}, {"points", map.points}, {"degenerate_triangles", map.degenerate}};
+                 {"invalid_kept", map.invalid_kept}, {"points", map.points}, {"degenerate_triangles", map.degenerate},
+                 {"shared_by_charts", map.shared}};
   j["error_estimate_pct"] = {{"max", quantile(errors, 1.0)}, {"p99", quantile(errors, 0.99)},
                              {"p95", quantile(errors, 0.95)}, {"median", quantile(errors, 0.5)},
                              {"target", scene.settings.target_error_pct}};

@@ -99,14 +99,66 @@ TexelPoint point_at(const Triangle& tri, const std::array<double, 3>& b) {
 }
 
 struct SubsampleOwner {
-  std::int32_t triangle = -1;
-  bool strict = false;
+  std::int32_t triangle = -1;      // of the texel's chart
+  std::int32_t strict_chart = -1;  // a chart that contains the centre strictly inside
   TexelPoint point;
 };
 
+// A clipped piece of one chart in one texel.
+struct Piece {
+  std::size_t texel = 0;
+  std::int32_t chart = -1;
+  double area = 0;
+  std::uint32_t triangle = 0;
+  std::array<double, 2> centroid{};
+};
+
+// Calls visit(i, j) for every texel the bounding box of the triangle's texel-space corners meets.
+template <class Visit>
+void for_each_texel(const Triangle& tri, std::uint32_t W, std::uint32_t H, const Visit& visit) {
+  double x0 = tri.t[0][0], x1 = x0, y0 = tri.t[0][1], y1 = y0;
+  for (const auto& c : tri.t) {
+    x0 = std::min(x0, c[0]);
+    x1 = std::max(x1, c[0]);
+    y0 = std::min(y0, c[1]);
+    y1 = std::max(y1, c[1]);
+  }
+  const auto lo = [](double a) { return static_cast<std::uint32_t>(std::max(0.0, std::floor(a))); };
+  const std::uint32_t i1 = std::min(W - 1, static_cast<std::uint32_t>(std::floor(x1)));
+  const std::uint32_t j1 = std::min(H - 1, static_cast<std::uint32_t>(std::floor(y1)));
+  for (std::uint32_t j = lo(y0); j <= j1; ++j)
+    for (std::uint32_t i = lo(x0); i <= i1; ++i) visit(i, j);
+}
+
+// Per texel, the chart whose pieces cover most of it (-1: none), and that chart's area.
+std::vector<std::int32_t> texel_charts(std::vector<Piece>& pieces, std::size_t texels, std::vector<double>& area,
+                                       std::uint64_t& shared) {
+  std::stable_sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) {
+    return a.texel != b.texel ? a.texel < b.texel : a.chart < b.chart;
+  });
+  std::vector<std::int32_t> chart(texels, -1);
+  area.assign(texels, 0.0);
+  shared = 0;
+  for (std::size_t k = 0; k < pieces.size();) {
+    const std::size_t texel = pieces[k].texel;
+    int charts = 0;
+    while (k < pieces.size() && pieces[k].texel == texel) {
+      const std::int32_t c = pieces[k].chart;
+      double sum = 0;
+      for (; k < pieces.size() && pieces[k].texel == texel && pieces[k].chart == c; ++k) sum += pieces[k].area;
+      ++charts;
+      if (sum > area[texel]) {
+        area[texel] = sum;
+        chart[texel] = c;
+      }
+    }
+    if (charts > 1) ++shared;
+  }
+  return chart;
+}
+
 struct Fallback {
   double area = 0;
-  std::int32_t chart = -1;
   TexelPoint point;
 };
 
@@ -174,67 +226,71 @@ bool rasterize_lightmap(const scene::LightmapTarget& target, const std::vector<s
   }
   const auto chart_of = [&](std::size_t t) { return charts.find(vertex_of_corner[3 * t]); };
 
+  // Pass 1: every triangle clipped to every texel it meets. A texel belongs to the chart whose
+  // pieces cover most of it, and only that chart's surface stands for it: two charts that meet
+  // in one texel of the atlas are apart on the mesh, and their mean would be neither's light.
   const std::size_t texels = static_cast<std::size_t>(W) * H;
-  constexpr int kSub = kSubsamples * kSubsamples;
-  std::vector<SubsampleOwner> owners(texels * kSub);
-  std::vector<Fallback> fallback(texels);
+  std::vector<Piece> pieces;
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    for_each_texel(tris[t], W, H, [&](std::uint32_t i, std::uint32_t j) {
+      Polygon q{tris[t].t[0], tris[t].t[1], tris[t].t[2]};
+      q = clip(clip(clip(clip(q, 0, i, false), 0, i + 1.0, true), 1, j, false), 1, j + 1.0, true);
+      if (q.size() < 3) return;
+      std::array<double, 2> centroid{};
+      const double area = polygon_area(q, centroid);
+      if (area > 0) pieces.push_back({std::size_t{j} * W + i, chart_of(t), area, static_cast<std::uint32_t>(t), centroid});
+    });
+  std::vector<double> area;
   out.width = W;
   out.height = H;
-  out.coverage.assign(texels, 0.0f);
-  std::vector<double> coverage(texels, 0.0);
+  out.chart = texel_charts(pieces, texels, area, out.shared);
+  std::vector<Fallback> fallback(texels);  // the largest piece of the texel's chart
+  for (const Piece& p : pieces)
+    if (p.chart == out.chart[p.texel] && p.area > fallback[p.texel].area)
+      fallback[p.texel] = {p.area, point_at(tris[p.triangle], barycentric(tris[p.triangle], p.centroid[0], p.centroid[1]))};
+  pieces = {};
+
+  // Pass 2: each sub-square centre is owned by the first triangle of the texel's chart that
+  // contains it. Two charts containing one centre strictly inside overlap.
+  constexpr int kSub = kSubsamples * kSubsamples;
+  std::vector<SubsampleOwner> owners(texels * kSub);
   for (std::size_t t = 0; t < tris.size(); ++t) {
     const Triangle& tri = tris[t];
     const std::int32_t chart = chart_of(t);
-    double x0 = tri.t[0][0], x1 = x0, y0 = tri.t[0][1], y1 = y0;
-    for (const auto& c : tri.t) {
-      x0 = std::min(x0, c[0]);
-      x1 = std::max(x1, c[0]);
-      y0 = std::min(y0, c[1]);
-      y1 = std::max(y1, c[1]);
-    }
-    const auto lo = [](double a) { return static_cast<std::uint32_t>(std::max(0.0, std::floor(a))); };
-    const std::uint32_t i0 = lo(x0), j0 = lo(y0);
-    const std::uint32_t i1 = std::min(W - 1, static_cast<std::uint32_t>(std::floor(x1)));
-    const std::uint32_t j1 = std::min(H - 1, static_cast<std::uint32_t>(std::floor(y1)));
-    for (std::uint32_t j = j0; j <= j1; ++j)
-      for (std::uint32_t i = i0; i <= i1; ++i) {
-        Polygon q{tri.t[0], tri.t[1], tri.t[2]};
-        q = clip(clip(clip(clip(q, 0, i, false), 0, i + 1.0, true), 1, j, false), 1, j + 1.0, true);
-        if (q.size() < 3) continue;
-        std::array<double, 2> centroid{};
-        const double area = polygon_area(q, centroid);
-        if (!(area > 0)) continue;
-        const std::size_t texel = static_cast<std::size_t>(j) * W + i;
-        coverage[texel] += area;
-        if (area > fallback[texel].area)
-          fallback[texel] = {area, chart, point_at(tri, barycentric(tri, centroid[0], centroid[1]))};
-        for (int s = 0; s < kSub; ++s) {
-          const double x = i + (s % kSubsamples + 0.5) / kSubsamples, y = j + (s / kSubsamples + 0.5) / kSubsamples;
-          const std::array<double, 3> b = barycentric(tri, x, y);
-          constexpr double kEdge = 1e-12;
-          if (!(b[0] >= -kEdge && b[1] >= -kEdge && b[2] >= -kEdge)) continue;
-          const bool strict = b[0] > kEdge && b[1] > kEdge && b[2] > kEdge;
-          SubsampleOwner& o = owners[texel * kSub + s];
-          if (o.triangle >= 0) {
-            if (strict && o.strict && chart_of(static_cast<std::size_t>(o.triangle)) != chart) {
-              error = geometry[tri.shape].label + ": its lightmap UVs overlap another chart at texel (" +
-                      std::to_string(i) + ", " + std::to_string(j) + ") of " + target.label + "'s lightmap";
-              return false;
-            }
-            continue;
+    bool overlap = false;
+    for_each_texel(tri, W, H, [&](std::uint32_t i, std::uint32_t j) {
+      const std::size_t texel = std::size_t{j} * W + i;
+      if (overlap || out.chart[texel] < 0) return;
+      for (int s = 0; s < kSub; ++s) {
+        const double x = i + (s % kSubsamples + 0.5) / kSubsamples, y = j + (s / kSubsamples + 0.5) / kSubsamples;
+        const std::array<double, 3> b = barycentric(tri, x, y);
+        constexpr double kEdge = 1e-12;
+        if (!(b[0] >= -kEdge && b[1] >= -kEdge && b[2] >= -kEdge)) continue;
+        SubsampleOwner& o = owners[texel * kSub + s];
+        if (b[0] > kEdge && b[1] > kEdge && b[2] > kEdge) {
+          if (o.strict_chart >= 0 && o.strict_chart != chart) {
+            error = geometry[tri.shape].label + ": its lightmap UVs overlap another chart at texel (" +
+                    std::to_string(i) + ", " + std::to_string(j) + ") of " + target.label + "'s lightmap";
+            overlap = true;
+            return;
           }
-          o = {static_cast<std::int32_t>(t), strict, point_at(tri, b)};
+          o.strict_chart = chart;
+        }
+        if (o.triangle < 0 && chart == out.chart[texel]) {
+          o.triangle = static_cast<std::int32_t>(t);
+          o.point = point_at(tri, b);
         }
       }
+    });
+    if (overlap) return false;
   }
-  out.chart.assign(texels, -1);
+  out.coverage.assign(texels, 0.0f);
   out.first.assign(texels + 1, 0);
   out.points.clear();
   for (std::size_t texel = 0; texel < texels; ++texel) {
     out.first[texel] = static_cast<std::uint32_t>(out.points.size());
-    if (!(coverage[texel] > 0)) continue;
-    out.coverage[texel] = static_cast<float>(std::min(1.0, coverage[texel]));
-    out.chart[texel] = fallback[texel].chart;
+    if (out.chart[texel] < 0) continue;
+    out.coverage[texel] = static_cast<float>(std::min(1.0, area[texel]));
     for (int s = 0; s < kSub; ++s)
       if (owners[texel * kSub + s].triangle >= 0) out.points.push_back(owners[texel * kSub + s].point);
     if (out.points.size() == out.first[texel]) out.points.push_back(fallback[texel].point);

@@ -3,11 +3,14 @@
 //
 // Texel (i, j) is the square [i, i + 1] x [j, j + 1] of texel space, x = u W, y = (1 - v) H
 // (row 0 at the top of the image, Unity's v up). Each triangle is clipped to each texel square
-// it meets (Sutherland-Hodgman against the four sides): the clipped polygons' areas are the
-// texel's coverage. A texel is used when its coverage is positive; its sample points are the
-// centres of a kSubsamples x kSubsamples grid of sub-squares that some triangle contains, or,
-// when a sliver covers none of them, the centroid of its largest clipped polygon: the texel's
-// value is the mean over its points, each standing for an equal share of the covered area.
+// it meets (Sutherland-Hodgman against the four sides). A texel belongs to the chart whose
+// clipped polygons cover most of it, and their area is its coverage; a texel is used when
+// that is positive. Its sample points are the centres of a kSubsamples x kSubsamples grid of
+// sub-squares that a triangle of its chart contains, or, when a sliver covers none of them,
+// the centroid of that chart's largest clipped polygon: the texel's value is the mean over
+// its points, each standing for an equal share of the covered area. Another chart's part of
+// the texel (where two charts meet in the atlas) is not its surface: it is left out, counted
+// in `shared`.
 //
 // Normals: a mesh with shading normals (scene.h) has them interpolated by the barycentrics and
 // normalised, turned to the front's side if a vertex's normal points behind it; else the
@@ -39,11 +42,12 @@ struct TexelPoint {
 
 struct LightmapRaster {
   std::uint32_t width = 0, height = 0;
-  std::vector<float> coverage;        // per texel, covered share of its square, [0, 1]
-  std::vector<std::int32_t> chart;    // per texel, its chart (the largest covering), -1 unused
+  std::vector<float> coverage;        // per texel, the share of its square its chart covers, [0, 1]
+  std::vector<std::int32_t> chart;    // per texel, its chart (the one covering most of it), -1 unused
   std::vector<std::uint32_t> first;   // per texel, its first point in `points`; width*height+1 entries
   std::vector<TexelPoint> points;
   std::uint64_t degenerate = 0;       // triangles skipped: no area in UV or in space
+  std::uint64_t shared = 0;           // used texels that more than one chart covers
 };
 
 // Rasterises `target`'s shapes (each with uv, scene.h). Returns false with `error` set to one

@@ -25,7 +25,7 @@ struct LightmapTexels {
   std::uint32_t width = 0, height = 0;
   std::vector<ShL2> radiance;         // per texel, row 0 at the top: L_c,i in Unity's frame
   std::vector<TexelState> state;
-  std::vector<float> coverage;        // covered share of the texel's square
+  std::vector<float> coverage;        // the share of the texel's square its chart covers
   std::vector<float> error_pct;       // per texel, % of its own mean E/pi (Baked texels)
   std::vector<float> backface;        // per texel, mean backface fraction of its points
   // Per Baked texel and effect, as the probes' BakeResult::effects and ::sampling (the mean
@@ -36,6 +36,7 @@ struct LightmapTexels {
   std::vector<std::array<EffectSampling, kEffectCount>> sampling;
   std::uint64_t points = 0;           // baked points
   std::uint64_t degenerate = 0;       // triangles without area, skipped
+  std::uint64_t shared = 0;           // texels two charts cover, each holding the one covering most of it
   std::uint64_t used = 0, dilated = 0, padded = 0, invalid_kept = 0;
 };
 
