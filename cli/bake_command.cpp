@@ -14,6 +14,7 @@
 #include "output_check.h"
 #include "report.h"
 #include "shpack/bake/bake.h"
+#include "shpack/bake/bake_part.h"
 #include "shpack/bake/lightmap_output.h"
 #include "shpack/io/exr_writer.h"
 #include "shpack/io/atomic_write.h"
@@ -157,50 +158,28 @@ CLI::App* add_bake_command(CLI::App& app, BakeCommandOptions& options) {
   cmd->add_option("--lightmap-dir", options.lightmap_dir,
                   "Folder of the lightmaps' images and sidecars (default: the output's folder)")
       ->type_name("DIR");
+  cmd->add_option("--shard", options.shard,
+                  "Bake only shard K of N (probes and lightmap texels balanced by cost) into the part file -o; "
+                  "shpack merge joins the parts (docs/scale.md)")
+      ->type_name("K/N")
+      ->check([](const std::string& text) {
+        bake::ShardSpec shard;
+        std::string why;
+        return bake::parse_shard(text, shard, why) ? std::string() : why;
+      });
   return cmd;
 }
 
-int run_bake(const BakeCommandOptions& options) {
+int write_bake_outputs(const scene::Scene& scene, const BakeCommandOptions& options, const bake::BakeResult& result,
+                       const bake::LightmapBakeResult& lightmaps) {
   bake::BakeJsonOptions json_options;
   json_options.format = options.format;
   if (!parse_window(options.window, json_options.window).ok()) return kExitUsage;  // checked by CLI11
-
-  scene::Scene scene;
-  if (io::IoStatus st = scene::load_scene(options.scene, scene); !st.ok()) {
-    report_error(st.message);
-    return kExitFailure;
-  }
-  // The outputs are none of the files read: the scene, its map, its meshes (before the bake).
-  const std::filesystem::path lightmap_dir = lightmap_folder(options);
-  std::vector<std::string> outputs{options.output};
-  for (const std::filesystem::path& file : lightmap_files(scene, lightmap_dir)) outputs.push_back(file.string());
-  for (const std::string& output : outputs)
-    if (const std::string problem = check_output_not_input(output, scene_input_files(scene)); !problem.empty()) {
-      report_usage_error("bake", problem);
-      return kExitUsage;
-    }
-  bake::BakeOptions bake_options;
-  // More threads than cores cannot be faster, and each costs a stack and buffers: 100000
-  // took 7 s and 550 MB for 75 probes, 2^32 - 1 ran out of memory. The output is the same for
-  // any count.
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  bake_options.threads = options.threads == 0 ? 0 : std::min(options.threads, cores);
-  if (!options.quiet && isatty(STDERR_FILENO)) bake_options.progress = draw_progress;
-  bake::BakeResult result;
-  if (io::IoStatus st = bake::bake(scene, bake_options, result); !st.ok()) {
-    report_error(st.message);
-    return kExitFailure;
-  }
   warn_invalid_probes(scene, result);
   warn_capped_probes(scene, result);
-  bake::LightmapBakeResult lightmaps;
   if (!scene.lightmaps.empty()) {
-    if (io::IoStatus st = bake::bake_lightmaps(scene, bake_options, lightmaps); !st.ok()) {
-      report_error(st.message);
-      return kExitFailure;
-    }
     json_options.lightmaps = &lightmaps;
-    if (io::IoStatus st = write_lightmaps(scene, lightmaps, lightmap_dir); !st.ok()) {
+    if (io::IoStatus st = write_lightmaps(scene, lightmaps, lightmap_folder(options)); !st.ok()) {
       report_error(st.message);
       return kExitFailure;
     }
@@ -223,6 +202,80 @@ int run_bake(const BakeCommandOptions& options) {
     return kExitFailure;
   }
   return kExitOk;
+}
+
+std::string check_bake_outputs(const scene::Scene& scene, const BakeCommandOptions& options,
+                               const std::vector<std::filesystem::path>& inputs) {
+  std::vector<std::string> outputs{options.output};
+  if (options.shard.empty())
+    for (const std::filesystem::path& file : lightmap_files(scene, lightmap_folder(options)))
+      outputs.push_back(file.string());
+  for (const std::string& output : outputs)
+    if (std::string problem = check_output_not_input(output, inputs); !problem.empty()) return problem;
+  return {};
+}
+
+bake::BakeOptions engine_options(const BakeCommandOptions& options) {
+  bake::BakeOptions bake_options;
+  // More threads than cores cannot be faster, and each costs a stack and buffers: 100000
+  // took 7 s and 550 MB for 75 probes, 2^32 - 1 ran out of memory. The output is the same for
+  // any count.
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  bake_options.threads = options.threads == 0 ? 0 : std::min(options.threads, cores);
+  if (!options.quiet && isatty(STDERR_FILENO)) bake_options.progress = draw_progress;
+  return bake_options;
+}
+
+namespace {
+
+// --shard K/N: the part file alone (no lightmap images: the merge writes them).
+int run_shard(const scene::Scene& scene, const BakeCommandOptions& options, const bake::BakeOptions& bake_options) {
+  bake::ShardSpec shard;
+  std::string why;
+  if (!bake::parse_shard(options.shard, shard, why)) return kExitUsage;  // checked by CLI11
+  if (options.output.empty() || options.output == "-") {
+    report_usage_error("bake", "--shard writes a part file: give it with -o PART");
+    return kExitUsage;
+  }
+  bake::BakePart part;
+  if (io::IoStatus st = bake::bake_part(scene, bake_options, shard, part); !st.ok()) {
+    report_error(st.message);
+    return kExitFailure;
+  }
+  if (io::IoStatus st = io::write_file_atomically(options.output, bake::encode_part(part)); !st.ok()) {
+    report_error(st.message);
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+int run_bake(const BakeCommandOptions& options) {
+  scene::Scene scene;
+  if (io::IoStatus st = scene::load_scene(options.scene, scene); !st.ok()) {
+    report_error(st.message);
+    return kExitFailure;
+  }
+  // The outputs are none of the files read: the scene, its map, its meshes (before the bake).
+  if (const std::string problem = check_bake_outputs(scene, options, scene_input_files(scene)); !problem.empty()) {
+    report_usage_error("bake", problem);
+    return kExitUsage;
+  }
+  const bake::BakeOptions bake_options = engine_options(options);
+  if (!options.shard.empty()) return run_shard(scene, options, bake_options);
+  bake::BakeResult result;
+  if (io::IoStatus st = bake::bake(scene, bake_options, result); !st.ok()) {
+    report_error(st.message);
+    return kExitFailure;
+  }
+  bake::LightmapBakeResult lightmaps;
+  if (!scene.lightmaps.empty())
+    if (io::IoStatus st = bake::bake_lightmaps(scene, bake_options, lightmaps); !st.ok()) {
+      report_error(st.message);
+      return kExitFailure;
+    }
+  return write_bake_outputs(scene, options, result, lightmaps);
 }
 
 }  // namespace shpack::cli

@@ -8,9 +8,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "shpack/bake/bake_json.h"
+#include "shpack/bake/lightmap_bake.h"
 
 namespace shpack::cli {
 
@@ -22,6 +25,7 @@ struct BakeCommandOptions {
   unsigned threads = 0;         // 0: all hardware threads
   bool quiet = false;           // no progress bar
   std::string lightmap_dir;     // --lightmap-dir; empty: the output's folder (stdout: the current one)
+  std::string shard;            // --shard K/N; empty: the whole bake
 };
 
 CLI::App* add_bake_command(CLI::App& app, BakeCommandOptions& options);
@@ -29,5 +33,15 @@ CLI::App* add_bake_command(CLI::App& app, BakeCommandOptions& options);
 // Exit code: kExitOk, kExitFailure when the scene cannot be read or baked or the output
 // written (nothing is written then), kExitUsage for a bad command line.
 int run_bake(const BakeCommandOptions& options);
+
+// What `shpack bake` and `shpack merge` share. The problem, one line, if an output (the JSON,
+// without --shard each lightmap's files) is one of `inputs`; empty if none is.
+std::string check_bake_outputs(const scene::Scene& scene, const BakeCommandOptions& options,
+                               const std::vector<std::filesystem::path>& inputs);
+// The engine's options from the command's: threads, progress.
+bake::BakeOptions engine_options(const BakeCommandOptions& options);
+// The warnings of a bake, the lightmaps' files, then the JSON (-o, atomically, or stdout).
+int write_bake_outputs(const scene::Scene& scene, const BakeCommandOptions& options, const bake::BakeResult& result,
+                       const bake::LightmapBakeResult& lightmaps);
 
 }  // namespace shpack::cli

@@ -12,6 +12,7 @@
 #include "convert_command.h"
 #include "eval_command.h"
 #include "irradiance_command.h"
+#include "merge_command.h"
 #include "preview_command.h"
 #include "report.h"
 #include "shpack/io/version.h"
@@ -54,12 +55,14 @@ int main(int argc, char** argv) {
   PreviewOptions preview;
   BakeCommandOptions bake;
   IrradianceOptions irradiance;
+  MergeOptions merge;
   const CLI::App* convert_app = add_convert_command(app, convert);
   const CLI::App* eval_app = add_eval_command(app, eval);
   add_bench_command(app, bench);
   const CLI::App* preview_app = add_preview_command(app, preview);
   const CLI::App* bake_app = add_bake_command(app, bake);
   const CLI::App* irradiance_app = add_irradiance_command(app, irradiance);
+  const CLI::App* merge_app = add_merge_command(app, merge);
   for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) sub->set_version_flag("--version", version);
 
   if (argc > 1 && argv[1][0] != '-') {
@@ -80,5 +83,6 @@ int main(int argc, char** argv) {
   if (preview_app->parsed()) return run_preview(preview);
   if (bake_app->parsed()) return run_bake(bake);
   if (irradiance_app->parsed()) return run_irradiance(irradiance);
+  if (merge_app->parsed()) return run_merge(merge);
   return eval_app->parsed() ? run_eval(eval) : run_bench(bench);
 }

@@ -139,6 +139,12 @@ struct Engine {
   // sum m_k > 1 by Cauchy-Schwarz unless the points' lights are equal.
   const std::vector<std::uint32_t>* groups = nullptr;
   std::vector<double> target_scale;  // per receiver, sqrt(K) of its group; empty: 1
+  // Receivers the target does not hold (they take the fixed counts); null: none.
+  const std::vector<bool>* untargeted = nullptr;
+  // The key of receiver k's streams (sampling.h): its number in the whole bake, so that its
+  // numbers do not depend on which slice of the receivers an engine bakes; null: k.
+  const std::vector<std::uint64_t>* stream_ids = nullptr;
+  std::uint64_t stream_id(std::size_t k) const { return stream_ids ? (*stream_ids)[k] : k; }
 
   // After the pilot: each grouped receiver's pilot becomes its group's mean, and its target
   // scale sqrt(K). A group's receivers are consecutive (bake_surface_points).
@@ -309,7 +315,9 @@ struct Engine {
   // pilot, kPilotSamples.
   SamplePlan plan(int fixed, std::size_t k) const {
     if (piloting) return {0, kPilotSamples, kPilotSamples, false};
-    const double target = scene.settings.target_error_pct * (target_scale.empty() ? 1.0 : target_scale[k]);
+    const double target = untargeted && (*untargeted)[k]
+                              ? 0.0
+                              : scene.settings.target_error_pct * (target_scale.empty() ? 1.0 : target_scale[k]);
     return {target, static_cast<std::uint64_t>(std::max(1, fixed)),
             static_cast<std::uint64_t>(std::max(1, scene.settings.max_samples))};
   }
@@ -318,7 +326,7 @@ struct Engine {
   // The Sobol set of one batch of one (effect, probe, light, strategy): keyed, never shared.
   SobolSet sobol(Effect e, std::size_t probe, std::size_t light, int batch, int strategy = 0) const {
     const std::size_t key = light * 64 + static_cast<std::size_t>(batch) * 2 + static_cast<std::size_t>(strategy);
-    return SobolSet(stream(seed(), static_cast<std::uint64_t>(e), probe, key).bits());
+    return SobolSet(stream(seed(), static_cast<std::uint64_t>(e), stream_id(probe), key).bits());
   }
   void record(std::size_t probe, Effect e, const Estimate& est, Counters& n) {
     n.samples += est.samples;
@@ -678,7 +686,7 @@ struct Engine {
       for (int b = 0; b < kBatches; ++b) {
         state.first[b] = sobol(Effect::Bounce, k, 0, b);
         const std::size_t key = 1000 + static_cast<std::size_t>(b);  // apart from sobol()'s keys
-        state.padding[b] = stream(seed(), static_cast<std::uint64_t>(Effect::Bounce), k, key).bits();
+        state.padding[b] = stream(seed(), static_cast<std::uint64_t>(Effect::Bounce), stream_id(k), key).bits();
       }
       const Estimate est = run_batches(plan(scene.settings.bounce_samples, k), denominator(k), state);
       record(k, Effect::Bounce, est, n);
@@ -793,35 +801,50 @@ unsigned thread_count(const BakeOptions& options) {
 
 }  // namespace
 
-IoStatus bake(const scene::Scene& scene, const BakeOptions& options, BakeResult& out) {
+IoStatus bake_probe_range(const scene::Scene& scene, const BakeOptions& options, std::size_t first, std::size_t count,
+                          BakeResult& out) {
   try {
     const unsigned threads = thread_count(options);
     BakeResult result;
+    // A slice is baked as a scene of its probes alone, each keyed and named by its number in
+    // the whole scene.
+    const bool whole = first == 0 && count == scene.probes.size();
+    std::optional<scene::Scene> slice;
+    std::vector<std::uint64_t> ids(count);
+    for (std::size_t k = 0; k < count; ++k) ids[k] = first + k;
+    if (!whole) {
+      slice.emplace(scene);
+      slice->probes.assign(scene.probes.begin() + static_cast<std::ptrdiff_t>(first),
+                           scene.probes.begin() + static_cast<std::ptrdiff_t>(first + count));
+    }
+    const scene::Scene& probes = slice ? *slice : scene;
+    const auto label = [&](std::size_t k) { return scene::probe_label(scene, first + k); };
     // Probe validity (probe_validity.h) first: it needs the ray tracer whenever the scene has
     // geometry, even if no effect traces rays, and "offset" moves probes before any pass (the
     // passes then bake a copy of the scene holding the moved probes, with its own tracer).
-    Engine first(scene, options, threads);
-    result.validity.assign(scene.probes.size(), ProbeValidity{});
-    if (!scene.geometry.empty()) {
-      if (IoStatus st = first.build_tracer(result.geometry); !st.ok()) return st;
-      run_pass(scene.probes.size(), threads, "validity", options, [&](std::size_t k, Counters& n) {
-        result.validity[k] = check_probe(*first.tracer, scene, k, n.rays);
+    Engine first_engine(probes, options, threads);
+    first_engine.stream_ids = &ids;
+    first_engine.receiver_label = label;
+    result.validity.assign(count, ProbeValidity{});
+    if (!probes.geometry.empty()) {
+      if (IoStatus st = first_engine.build_tracer(result.geometry); !st.ok()) return st;
+      run_pass(count, threads, "validity", options, [&](std::size_t k, Counters& n) {
+        result.validity[k] = check_probe(*first_engine.tracer, probes, k, ids[k], n.rays);
         ++n.samples;
       }, result.validity_cost);
     }
-    if (IoStatus st = check_invalid_probes(scene, result.validity); !st.ok()) return st;
-    const std::optional<scene::Scene> moved = offset_scene(scene, result.validity);
+    if (IoStatus st = check_invalid_probes(scene, result.validity, first, whole); !st.ok()) return st;
+    const std::optional<scene::Scene> moved = offset_scene(probes, result.validity);
     std::optional<Engine> second;
     if (moved) {
-      first.tracer.reset();
+      first_engine.tracer.reset();
       second.emplace(*moved, options, threads);
+      second->stream_ids = &ids;
+      second->receiver_label = label;
       result.geometry = {};
       if (IoStatus st = second->build_tracer(result.geometry); !st.ok()) return st;
     }
-    if (IoStatus st = run_effects(second ? *second : first, result); !st.ok()) return st;
-    dilate_invalid_probes(scene, result.validity, result.radiance, result.effects, result.sampling);
-    measure_errors(result);
-    result.validity_counts = count_validity(result.validity);
+    if (IoStatus st = run_effects(second ? *second : first_engine, result); !st.ok()) return st;
     out = std::move(result);
     return IoStatus::success();
   } catch (const std::exception& e) {
@@ -829,15 +852,32 @@ IoStatus bake(const scene::Scene& scene, const BakeOptions& options, BakeResult&
   }
 }
 
-IoStatus surface_validity(const scene::Scene& points, const BakeOptions& options, std::vector<ProbeValidity>& out,
-                          EffectCost& cost, GeometryCost& geometry) {
+IoStatus finish_probes(const scene::Scene& scene, BakeResult& result) {
+  if (IoStatus st = check_invalid_probes(scene, result.validity, 0, true); !st.ok()) return st;
+  dilate_invalid_probes(scene, result.validity, result.radiance, result.effects, result.sampling);
+  measure_errors(result);
+  result.validity_counts = count_validity(result.validity);
+  return IoStatus::success();
+}
+
+IoStatus bake(const scene::Scene& scene, const BakeOptions& options, BakeResult& out) {
+  BakeResult result;
+  if (IoStatus st = bake_probe_range(scene, options, 0, scene.probes.size(), result); !st.ok()) return st;
+  if (IoStatus st = finish_probes(scene, result); !st.ok()) return st;
+  out = std::move(result);
+  return IoStatus::success();
+}
+
+IoStatus surface_validity(const scene::Scene& points, const std::vector<std::uint64_t>& stream_ids,
+                          const BakeOptions& options, std::vector<ProbeValidity>& out, EffectCost& cost,
+                          GeometryCost& geometry) {
   try {
     out.assign(points.probes.size(), ProbeValidity{});
     if (points.geometry.empty()) return IoStatus::success();
     Engine engine(points, options, thread_count(options));
     if (IoStatus st = engine.build_tracer(geometry); !st.ok()) return st;
     run_pass(points.probes.size(), engine.threads, "validity", options, [&](std::size_t k, Counters& n) {
-      out[k] = check_probe(*engine.tracer, points, k, n.rays);
+      out[k] = check_probe(*engine.tracer, points, k, stream_ids[k], n.rays);
       ++n.samples;
     }, cost);
     return IoStatus::success();
@@ -846,15 +886,16 @@ IoStatus surface_validity(const scene::Scene& points, const BakeOptions& options
   }
 }
 
-IoStatus bake_surface_points(const scene::Scene& points, const std::vector<Vec3d>& normals,
-                             const std::vector<std::uint32_t>& group,
-                             const std::function<std::string(std::size_t)>& label, const BakeOptions& options,
+IoStatus bake_surface_points(const scene::Scene& points, const SurfacePoints& surface, const BakeOptions& options,
                              BakeResult& out) {
   try {
     BakeResult result;
     Engine engine(points, options, thread_count(options));
-    engine.normals = &normals;
-    engine.groups = &group;
+    engine.normals = &surface.normals;
+    engine.groups = &surface.group;
+    engine.untargeted = &surface.untargeted;
+    engine.stream_ids = &surface.stream_ids;
+    const auto& label = surface.label;
     engine.receiver_label = label;
     if (IoStatus st = run_effects(engine, result); !st.ok()) return st;
     result.validity.assign(points.probes.size(), ProbeValidity{});

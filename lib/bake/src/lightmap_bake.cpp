@@ -13,12 +13,6 @@
 namespace shpack::bake {
 namespace {
 
-// Where each baked point belongs.
-struct PointOwner {
-  std::uint32_t map = 0;
-  std::uint32_t texel = 0;
-};
-
 // Lifts a surface point off its surface along the normal by the engine's ray offset,
 // epsilon (1 + max|x_k|) (bake.cpp), so that rays leaving it clear the surface in float.
 Vec3 lifted(const Vec3& p, const Vec3& n) {
@@ -26,10 +20,10 @@ Vec3 lifted(const Vec3& p, const Vec3& n) {
   return p + eps * n;
 }
 
-std::string texel_label(const scene::Scene& scene, const std::vector<LightmapRaster>& rasters, const PointOwner& o) {
-  const std::uint32_t w = rasters[o.map].width;
-  return scene.lightmaps[o.map].label + "'s lightmap texel (" + std::to_string(o.texel % w) + ", " +
-         std::to_string(o.texel / w) + ")";
+std::string texel_label(const scene::Scene& scene, const std::vector<LightmapRaster>& rasters, const TexelRef& ref) {
+  const std::uint32_t w = rasters[ref.map].width;
+  return scene.lightmaps[ref.map].label + "'s lightmap texel (" + std::to_string(ref.texel % w) + ", " +
+         std::to_string(ref.texel / w) + ")";
 }
 
 // Point k's error estimate, every effect together (independent: in quadrature).
@@ -62,103 +56,66 @@ ChannelError error_of_mean(const std::vector<std::size_t>& points, const Error& 
   return err;
 }
 
-// A texel's value, error and validity from its points. Points inside geometry (backface
-// fraction above the threshold: the part of the floor a box stands on) do not count while
-// the texel has any other; a texel with none other is invalid, for dilation. The value is the
-// mean of the points that count; its error that of a mean of K independent estimates,
-// sqrt(sum e_k^2) / K per channel, in % of the texel's own mean E/pi (error_estimate.h).
-void gather_texels(const scene::Scene& scene, const LightmapRaster& raster, const BakeResult& baked,
-                   std::size_t first_point, LightmapTexels& map, std::vector<bool>& invalid) {
-  const std::size_t texels = static_cast<std::size_t>(raster.width) * raster.height;
-  map.width = raster.width;
-  map.height = raster.height;
-  map.radiance.assign(texels, ShL2{});
-  map.state.assign(texels, TexelState::Unused);
-  map.coverage = raster.coverage;
-  map.error_pct.assign(texels, 0.0f);
-  map.backface.assign(texels, 0.0f);
-  map.degenerate = raster.degenerate;
-  map.shared = raster.shared;
-  invalid.assign(texels, false);
-  const bool parts = !baked.effects.empty();
-  if (parts) {
-    map.effects.assign(texels, {});
-    map.sampling.assign(texels, {});
+io::IoStatus rasterize(const scene::Scene& scene, std::vector<LightmapRaster>& rasters) {
+  rasters.assign(scene.lightmaps.size(), {});
+  for (std::size_t m = 0; m < scene.lightmaps.size(); ++m) {
+    std::string why;
+    if (!rasterize_lightmap(scene.lightmaps[m], scene.geometry, rasters[m], why))
+      return io::IoStatus::error(io::IoErrc::BadDocument, scene.file, why);
   }
-  const double threshold = scene.settings.validity_threshold;
-  for (std::size_t t = 0; t < texels; ++t) {
-    const std::size_t a = first_point + raster.first[t], b = first_point + raster.first[t + 1];
-    if (a == b) continue;
-    double backface = 0;
-    bool any_valid = false;
-    for (std::size_t k = a; k < b; ++k) {
-      backface += baked.validity[k].backface_fraction;
-      any_valid = any_valid || baked.validity[k].backface_fraction <= threshold;
+  return io::IoStatus::success();
+}
+
+// The used texels (those with points) of every map, map after map, each texel's number in
+// its map's raster; and where each map's points start in one numbering of all maps' points.
+struct UsedTexels {
+  std::vector<TexelRef> texels;
+  std::vector<std::uint64_t> first_point;  // per map
+};
+
+UsedTexels used_texels(const std::vector<LightmapRaster>& rasters) {
+  UsedTexels used;
+  std::uint64_t points = 0;
+  for (std::size_t m = 0; m < rasters.size(); ++m) {
+    const LightmapRaster& r = rasters[m];
+    used.first_point.push_back(points);
+    for (std::size_t t = 0; t + 1 < r.first.size(); ++t)
+      if (r.first[t] != r.first[t + 1]) used.texels.push_back({static_cast<std::uint32_t>(m), static_cast<std::uint32_t>(t)});
+    points += r.first.back();
+  }
+  return used;
+}
+
+// A texel's value and error from the baked points [a, b) that count for it (bake_texels),
+// its backface fraction the mean over all of its points. The value is the mean of the
+// points; its error that of a mean of K independent estimates, sqrt(sum e_k^2) / K per
+// channel, in % of the texel's own mean E/pi (error_estimate.h).
+void gather_texel(const BakeResult& baked, std::size_t a, std::size_t b, double backface, bool invalid,
+                  LightmapTexelPart& out) {
+  std::vector<std::size_t> counted;
+  for (std::size_t k = a; k < b; ++k) counted.push_back(k);
+  const ShL2 radiance = mean_of(counted, [&](std::size_t k) -> const ShL2& { return baked.radiance[k]; });
+  const ChannelError err = error_of_mean(counted, [&](std::size_t k) { return point_error(baked, k); });
+  out.radiance.push_back(radiance);
+  out.error_pct.push_back(static_cast<float>(error_pct(err, radiance)));
+  out.backface.push_back(static_cast<float>(backface));
+  out.invalid.push_back(invalid ? 1 : 0);
+  if (baked.effects.empty()) return;
+  std::array<ShL2, kEffectCount> effects;
+  std::array<EffectSampling, kEffectCount> sampling;
+  for (std::size_t e = 0; e < kEffectCount; ++e) {
+    effects[e] = mean_of(counted, [&](std::size_t k) -> const ShL2& { return baked.effects[k][e]; });
+    EffectSampling& s = sampling[e];
+    s.error = error_of_mean(counted, [&](std::size_t k) { return baked.sampling[k][e].error; });
+    s.error_pct = error_pct(s.error, radiance);
+    for (const std::size_t k : counted) {
+      s.samples += baked.sampling[k][e].samples;
+      s.capped = s.capped || baked.sampling[k][e].capped;
     }
-    std::vector<std::size_t> counted;
-    for (std::size_t k = a; k < b; ++k)
-      if (!any_valid || baked.validity[k].backface_fraction <= threshold) counted.push_back(k);
-    map.radiance[t] = mean_of(counted, [&](std::size_t k) -> const ShL2& { return baked.radiance[k]; });
-    const ChannelError err = error_of_mean(counted, [&](std::size_t k) { return point_error(baked, k); });
-    map.error_pct[t] = static_cast<float>(error_pct(err, map.radiance[t]));
-    if (parts)
-      for (std::size_t e = 0; e < kEffectCount; ++e) {
-        map.effects[t][e] = mean_of(counted, [&](std::size_t k) -> const ShL2& { return baked.effects[k][e]; });
-        EffectSampling& s = map.sampling[t][e];
-        s.error = error_of_mean(counted, [&](std::size_t k) { return baked.sampling[k][e].error; });
-        s.error_pct = error_pct(s.error, map.radiance[t]);
-        for (const std::size_t k : counted) {
-          s.samples += baked.sampling[k][e].samples;
-          s.capped = s.capped || baked.sampling[k][e].capped;
-        }
-        s.samples /= counted.size();
-      }
-    map.backface[t] = static_cast<float>(backface / static_cast<double>(b - a));
-    map.state[t] = TexelState::Baked;
-    invalid[t] = !any_valid;
-    ++map.used;
+    s.samples /= counted.size();
   }
-  map.points = raster.first[texels];
-}
-
-// Which points to bake: a texel's valid points; a texel with none, all of its points when its
-// chart has no valid texel to dilate from (it keeps what was baked), else none (dilated).
-std::vector<bool> points_to_bake(const scene::Scene& scene, const std::vector<LightmapRaster>& rasters,
-                                 const std::vector<ProbeValidity>& validity) {
-  const double threshold = scene.settings.validity_threshold;
-  const auto valid = [&](std::size_t k) { return validity[k].backface_fraction <= threshold; };
-  std::vector<bool> wanted(validity.size(), false);
-  std::size_t first = 0;
-  for (const LightmapRaster& r : rasters) {
-    const std::size_t texels = r.first.size() - 1;
-    std::vector<bool> texel_valid(texels, false);
-    std::vector<std::int32_t> valid_charts;
-    for (std::size_t t = 0; t < texels; ++t)
-      for (std::size_t k = first + r.first[t]; k < first + r.first[t + 1]; ++k)
-        if (valid(k)) {
-          texel_valid[t] = true;
-          wanted[k] = true;
-          valid_charts.push_back(r.chart[t]);
-        }
-    std::sort(valid_charts.begin(), valid_charts.end());
-    for (std::size_t t = 0; t < texels; ++t)
-      if (!texel_valid[t] && r.first[t] != r.first[t + 1] &&
-          !std::binary_search(valid_charts.begin(), valid_charts.end(), r.chart[t]))
-        for (std::size_t k = first + r.first[t]; k < first + r.first[t + 1]; ++k) wanted[k] = true;
-    first += r.first[texels];
-  }
-  return wanted;
-}
-
-// Where each map's texels start in one numbering of every map's texels.
-std::vector<std::uint32_t> first_texels(const std::vector<LightmapRaster>& rasters) {
-  std::vector<std::uint32_t> first;
-  std::uint32_t next = 0;
-  for (const LightmapRaster& r : rasters) {
-    first.push_back(next);
-    next += static_cast<std::uint32_t>(r.first.size() - 1);
-  }
-  return first;
+  out.effects.push_back(effects);
+  out.sampling.push_back(sampling);
 }
 
 void add_costs(std::array<EffectCost, kEffectCount>& into, const std::array<EffectCost, kEffectCount>& from) {
@@ -172,17 +129,69 @@ void add_costs(std::array<EffectCost, kEffectCount>& into, const std::array<Effe
   }
 }
 
-}  // namespace
-
-io::IoStatus bake_lightmaps(const scene::Scene& scene, const BakeOptions& options, LightmapBakeResult& out) {
-  const auto start = std::chrono::steady_clock::now();
+// Every map's texels from the part of every used texel (in order), dilated and padded.
+io::IoStatus finish_rasters(const scene::Scene& scene, const std::vector<LightmapRaster>& rasters,
+                            const LightmapTexelPart& all, LightmapBakeResult& out) {
+  const UsedTexels used = used_texels(rasters);
+  if (all.texels != used.texels)
+    return io::IoStatus::error(io::IoErrc::BadDocument, scene.file, "the lightmap texels baked are not the scene's");
   LightmapBakeResult result;
-  std::vector<LightmapRaster> rasters(scene.lightmaps.size());
-  for (std::size_t m = 0; m < scene.lightmaps.size(); ++m) {
-    std::string why;
-    if (!rasterize_lightmap(scene.lightmaps[m], scene.geometry, rasters[m], why))
-      return io::IoStatus::error(io::IoErrc::BadDocument, scene.file, why);
+  std::vector<std::vector<bool>> invalid(rasters.size());
+  for (std::size_t m = 0; m < rasters.size(); ++m) {
+    const LightmapRaster& raster = rasters[m];
+    const std::size_t texels = static_cast<std::size_t>(raster.width) * raster.height;
+    LightmapTexels map;
+    map.width = raster.width;
+    map.height = raster.height;
+    map.radiance.assign(texels, ShL2{});
+    map.state.assign(texels, TexelState::Unused);
+    map.coverage = raster.coverage;
+    map.error_pct.assign(texels, 0.0f);
+    map.backface.assign(texels, 0.0f);
+    map.degenerate = raster.degenerate;
+    map.shared = raster.shared;
+    map.points = raster.first[texels];
+    if (!all.effects.empty()) {
+      map.effects.assign(texels, {});
+      map.sampling.assign(texels, {});
+    }
+    invalid[m].assign(texels, false);
+    result.maps.push_back(std::move(map));
   }
+  for (std::size_t u = 0; u < all.texels.size(); ++u) {
+    const auto [m, t] = all.texels[u];
+    LightmapTexels& map = result.maps[m];
+    map.radiance[t] = all.radiance[u];
+    map.error_pct[t] = all.error_pct[u];
+    map.backface[t] = all.backface[u];
+    map.state[t] = TexelState::Baked;
+    invalid[m][t] = all.invalid[u] != 0;
+    ++map.used;
+    if (!all.effects.empty()) {
+      map.effects[t] = all.effects[u];
+      map.sampling[t] = all.sampling[u];
+    }
+  }
+  for (std::size_t m = 0; m < rasters.size(); ++m) {
+    dilate_invalid_texels(result.maps[m], rasters[m].chart, invalid[m]);
+    pad_charts(result.maps[m], rasters[m].chart, scene.lightmaps[m].padding);
+  }
+  result.costs = all.costs;
+  result.geometry = all.geometry;
+  result.validity_cost = all.validity_cost;
+  result.time_ms = all.time_ms;
+  out = std::move(result);
+  return io::IoStatus::success();
+}
+
+// The texels [first, first + count) of `used` from their rasters.
+io::IoStatus bake_texels(const scene::Scene& scene, const BakeOptions& options,
+                         const std::vector<LightmapRaster>& rasters, const UsedTexels& used, std::size_t first,
+                         std::size_t count, LightmapTexelPart& out) {
+  const auto start = std::chrono::steady_clock::now();
+  LightmapTexelPart part;
+  part.texels.assign(used.texels.begin() + static_cast<std::ptrdiff_t>(first),
+                     used.texels.begin() + static_cast<std::ptrdiff_t>(first + count));
   // Progress names the lightmap's passes as such ("lightmap bounce"), counting points.
   BakeOptions lightmap_options = options;
   if (options.progress)
@@ -190,75 +199,110 @@ io::IoStatus bake_lightmaps(const scene::Scene& scene, const BakeOptions& option
       const std::string name = std::string("lightmap ") + pass;
       options.progress(name.c_str(), done, total);
     };
-  // Every map's points in one bake: they share the tracer and the environment.
+  // The texels' points in one bake: they share the tracer and the environment.
   scene::Scene points = scene;
   points.probes.clear();
   points.lightmaps.clear();
   // Surfaces are no probes to move: validity is measured and dilation done within charts.
   points.settings.invalid_probes = scene::InvalidProbes::Keep;
-  std::vector<Vec3> normals;
-  std::vector<PointOwner> owners;
-  for (std::size_t m = 0; m < rasters.size(); ++m) {
+  SurfacePoints all;
+  std::vector<std::size_t> first_of;  // per texel of the part, its first point; one past the end
+  for (const auto& [m, t] : part.texels) {
     const LightmapRaster& r = rasters[m];
-    for (std::size_t t = 0; t + 1 < r.first.size(); ++t)
-      for (std::size_t k = r.first[t]; k < r.first[t + 1]; ++k) {
-        const Vec3 p = lifted(r.points[k].position, r.points[k].geometric);
-        points.probes.push_back({p.x, p.y, p.z});
-        normals.push_back(r.points[k].normal);
-        owners.push_back({static_cast<std::uint32_t>(m), static_cast<std::uint32_t>(t)});
-      }
+    first_of.push_back(all.normals.size());
+    for (std::size_t k = r.first[t]; k < r.first[t + 1]; ++k) {
+      const Vec3 p = lifted(r.points[k].position, r.points[k].geometric);
+      points.probes.push_back({p.x, p.y, p.z});
+      all.normals.push_back(r.points[k].normal);
+      all.stream_ids.push_back(kSurfaceStreams + used.first_point[m] + k);
+    }
   }
-  // Validity first; then only the points that count are baked (gather_texels): a point inside
-  // geometry would chase its error target in the dark to settings.max_samples for nothing.
+  first_of.push_back(all.normals.size());
+  // Validity first. Points inside geometry (backface fraction above the threshold: the part
+  // of the floor a box stands on) are not baked while their texel has others: they would
+  // chase the error target in the dark to settings.max_samples for nothing. A texel with no
+  // other is invalid, for dilation, and bakes all of its points at the fixed counts: what a
+  // chart with no valid texel keeps (finish_lightmaps decides, needing the whole chart).
   std::vector<ProbeValidity> validity;
-  if (io::IoStatus st = surface_validity(points, lightmap_options, validity, result.validity_cost, result.geometry); !st.ok())
+  if (io::IoStatus st = surface_validity(points, all.stream_ids, lightmap_options, validity, part.validity_cost,
+                                         part.geometry);
+      !st.ok())
     return st;
-  const std::vector<bool> wanted = points_to_bake(scene, rasters, validity);
+  const double threshold = scene.settings.validity_threshold;
   scene::Scene chosen = points;
   chosen.probes.clear();
-  std::vector<Vec3> chosen_normals;
+  SurfacePoints surface;
   std::vector<std::size_t> index_of;  // chosen point -> point
-  // The target is each texel's (gather_texels averages its baked points): a group per texel,
-  // its points consecutive (texel by texel, map after map).
-  std::vector<std::uint32_t> texel_of;
-  const std::vector<std::uint32_t> first_texel = first_texels(rasters);
-  for (std::size_t k = 0; k < points.probes.size(); ++k)
-    if (wanted[k]) {
-      chosen.probes.push_back(points.probes[k]);
-      chosen_normals.push_back(normals[k]);
-      index_of.push_back(k);
-      texel_of.push_back(first_texel[owners[k].map] + owners[k].texel);
-    }
-  BakeResult part;
-  const auto label = [&](std::size_t k) { return texel_label(scene, rasters, owners[index_of[k]]); };
-  if (io::IoStatus st = bake_surface_points(chosen, chosen_normals, texel_of, label, lightmap_options, part); !st.ok())
-    return st;
-  BakeResult baked;  // every point: the chosen ones' results, zero for the others (never read)
-  baked.radiance.assign(points.probes.size(), ShL2{});
-  baked.sampling.assign(points.probes.size(), {});
-  if (options.keep_effects) baked.effects.assign(points.probes.size(), {});
-  for (std::size_t c = 0; c < index_of.size(); ++c) {
-    baked.radiance[index_of[c]] = part.radiance[c];
-    baked.sampling[index_of[c]] = part.sampling[c];
-    if (options.keep_effects) baked.effects[index_of[c]] = part.effects[c];
+  for (std::size_t u = 0; u < part.texels.size(); ++u) {
+    bool any_valid = false;
+    for (std::size_t k = first_of[u]; k < first_of[u + 1]; ++k)
+      any_valid = any_valid || validity[k].backface_fraction <= threshold;
+    for (std::size_t k = first_of[u]; k < first_of[u + 1]; ++k)
+      if (!any_valid || validity[k].backface_fraction <= threshold) {
+        chosen.probes.push_back(points.probes[k]);
+        surface.normals.push_back(all.normals[k]);
+        surface.group.push_back(static_cast<std::uint32_t>(u));
+        surface.untargeted.push_back(!any_valid);
+        surface.stream_ids.push_back(all.stream_ids[k]);
+        index_of.push_back(k);
+      }
   }
-  baked.validity = std::move(validity);
-  baked.costs = part.costs;
-  baked.geometry = part.geometry.built ? part.geometry : result.geometry;
-  std::size_t first_point = 0;
-  for (std::size_t m = 0; m < rasters.size(); ++m) {
-    LightmapTexels map;
-    std::vector<bool> invalid;
-    gather_texels(scene, rasters[m], baked, first_point, map, invalid);
-    first_point += map.points;
-    dilate_invalid_texels(map, rasters[m].chart, invalid);
-    pad_charts(map, rasters[m].chart, scene.lightmaps[m].padding);
-    result.maps.push_back(std::move(map));
+  surface.label = [&](std::size_t k) { return texel_label(scene, rasters, part.texels[surface.group[k]]); };
+  BakeResult baked;
+  if (io::IoStatus st = bake_surface_points(chosen, surface, lightmap_options, baked); !st.ok()) return st;
+  // A texel's chosen points are consecutive, and every texel has some.
+  for (std::size_t a = 0, u = 0; u < part.texels.size(); ++u) {
+    std::size_t b = a;
+    while (b < index_of.size() && surface.group[b] == u) ++b;
+    double backface = 0;
+    for (std::size_t k = first_of[u]; k < first_of[u + 1]; ++k) backface += validity[k].backface_fraction;
+    backface /= static_cast<double>(first_of[u + 1] - first_of[u]);
+    gather_texel(baked, a, b, backface, surface.untargeted[a], part);
+    a = b;
   }
-  add_costs(result.costs, baked.costs);
-  result.geometry = baked.geometry;
-  result.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  out = std::move(result);
+  add_costs(part.costs, baked.costs);
+  if (baked.geometry.built) part.geometry = baked.geometry;
+  part.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  out = std::move(part);
+  return io::IoStatus::success();
+}
+
+}  // namespace
+
+io::IoStatus lightmap_texel_points(const scene::Scene& scene, std::vector<std::uint32_t>& points) {
+  std::vector<LightmapRaster> rasters;
+  if (io::IoStatus st = rasterize(scene, rasters); !st.ok()) return st;
+  points.clear();
+  for (const TexelRef& ref : used_texels(rasters).texels)
+    points.push_back(rasters[ref.map].first[ref.texel + 1] - rasters[ref.map].first[ref.texel]);
+  return io::IoStatus::success();
+}
+
+io::IoStatus bake_lightmap_texels(const scene::Scene& scene, const BakeOptions& options, std::size_t first,
+                                  std::size_t count, LightmapTexelPart& out) {
+  std::vector<LightmapRaster> rasters;
+  if (io::IoStatus st = rasterize(scene, rasters); !st.ok()) return st;
+  const UsedTexels used = used_texels(rasters);
+  if (first > used.texels.size() || count > used.texels.size() - first)
+    return io::IoStatus::error(io::IoErrc::BadDocument, scene.file, "the lightmap texels asked for are not the scene's");
+  return bake_texels(scene, options, rasters, used, first, count, out);
+}
+
+io::IoStatus finish_lightmaps(const scene::Scene& scene, const LightmapTexelPart& all, LightmapBakeResult& out) {
+  std::vector<LightmapRaster> rasters;
+  if (io::IoStatus st = rasterize(scene, rasters); !st.ok()) return st;
+  return finish_rasters(scene, rasters, all, out);
+}
+
+io::IoStatus bake_lightmaps(const scene::Scene& scene, const BakeOptions& options, LightmapBakeResult& out) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<LightmapRaster> rasters;
+  if (io::IoStatus st = rasterize(scene, rasters); !st.ok()) return st;
+  const UsedTexels used = used_texels(rasters);
+  LightmapTexelPart all;
+  if (io::IoStatus st = bake_texels(scene, options, rasters, used, 0, used.texels.size(), all); !st.ok()) return st;
+  if (io::IoStatus st = finish_rasters(scene, rasters, all, out); !st.ok()) return st;
+  out.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return io::IoStatus::success();
 }
 

@@ -27,7 +27,7 @@ double surface_epsilon(const Vec3d& x) noexcept {
 // Probe k's directions (probe_validity.h): the spherical Fibonacci set, point i at height
 // 1 - (2i + 1) / n and azimuth i times the golden angle, turned by the rotation of a uniform
 // unit quaternion (Shoemake 1992).
-Directions validity_directions(std::uint64_t seed, std::size_t probe) {
+Directions validity_directions(std::uint64_t seed, std::uint64_t probe) {
   Rng rng = stream(seed, kValidityStream, probe, 0);
   const double u1 = rng.uniform(), u2 = 2 * std::numbers::pi * rng.uniform(), u3 = 2 * std::numbers::pi * rng.uniform();
   const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
@@ -181,9 +181,10 @@ EffectSampling dilated_sampling(const std::vector<NearProbe>& near,
 
 }  // namespace
 
-ProbeValidity check_probe(const Tracer& tracer, const scene::Scene& scene, std::size_t k, std::uint64_t& rays) {
+ProbeValidity check_probe(const Tracer& tracer, const scene::Scene& scene, std::size_t k, std::uint64_t stream_id,
+                          std::uint64_t& rays) {
   const scene::SceneSettings& settings = scene.settings;
-  const Directions dirs = validity_directions(settings.seed, k);
+  const Directions dirs = validity_directions(settings.seed, stream_id);
   const Vec3d p = vec(scene.probes[k]);
   const bool offset = settings.invalid_probes == InvalidProbes::Offset;
   Measure m = measure(tracer, scene, p, dirs, offset, rays);
@@ -199,18 +200,19 @@ ProbeValidity check_probe(const Tracer& tracer, const scene::Scene& scene, std::
   return v;
 }
 
-io::IoStatus check_invalid_probes(const scene::Scene& scene, const std::vector<ProbeValidity>& validity) {
+io::IoStatus check_invalid_probes(const scene::Scene& scene, const std::vector<ProbeValidity>& validity,
+                                  std::size_t first_probe, bool whole) {
   const InvalidProbes policy = scene.settings.invalid_probes;
   if (policy == InvalidProbes::Keep) return io::IoStatus::success();
   const auto first = std::find_if(validity.begin(), validity.end(), [policy](const ProbeValidity& v) {
     return policy == InvalidProbes::Error ? !v.valid : left_to_dilate(v);
   });
   if (first == validity.end()) return io::IoStatus::success();
-  const std::size_t k = static_cast<std::size_t>(first - validity.begin());
+  const std::size_t k = first_probe + static_cast<std::size_t>(first - validity.begin());
   if (policy == InvalidProbes::Error)
     return io::IoStatus::error(io::IoErrc::BadDocument, scene.file,
                                describe_invalid(scene, k, *first) + " (settings.invalid_probes \"error\")");
-  if (std::any_of(validity.begin(), validity.end(), dilation_source)) return io::IoStatus::success();
+  if (!whole || std::any_of(validity.begin(), validity.end(), dilation_source)) return io::IoStatus::success();
   return io::IoStatus::error(io::IoErrc::BadDocument, scene.file,
                              "no valid probe to dilate from (every probe is inside geometry); " +
                                  describe_invalid(scene, k, *first));

@@ -43,12 +43,16 @@ inline constexpr double kOffsetBias = 0.01;  // metres
 inline constexpr std::size_t kDilationNeighbours = 8;
 
 // Probe k's validity under the scene's settings: measured at its position and, with
-// InvalidProbes::Offset, moved if it is invalid. Adds the rays traced to `rays`.
-ProbeValidity check_probe(const Tracer& tracer, const scene::Scene& scene, std::size_t k, std::uint64_t& rays);
+// InvalidProbes::Offset, moved if it is invalid. Its rays' stream is keyed by `stream_id`
+// (its number in the whole scene, or a surface point's). Adds the rays traced to `rays`.
+ProbeValidity check_probe(const Tracer& tracer, const scene::Scene& scene, std::size_t k, std::uint64_t stream_id,
+                          std::uint64_t& rays);
 
-// Before the passes: "error" with an invalid probe fails naming the first and the shape
-// around it; "dilate" and "offset" fail if probes are left to dilate and none is valid.
-io::IoStatus check_invalid_probes(const scene::Scene& scene, const std::vector<ProbeValidity>& validity);
+// validity[k] is probe first + k of `scene`'s. "error" with an invalid probe fails naming the
+// first and the shape around it; with `whole` (validity holds every probe), "dilate" and
+// "offset" fail if probes are left to dilate and none is valid.
+io::IoStatus check_invalid_probes(const scene::Scene& scene, const std::vector<ProbeValidity>& validity,
+                                  std::size_t first, bool whole);
 
 // The scene with each moved probe at its offset_position; nothing if none moved.
 std::optional<scene::Scene> offset_scene(const scene::Scene& scene, const std::vector<ProbeValidity>& validity);

@@ -136,6 +136,20 @@ struct BakeResult {
 
 // Errors name the scene file: an environment map that cannot be read, a probe inside a
 // light ("probes[3] (0, 1, 0) is inside lights[2] 'lamp' (sphere)"), Embree failing.
+// It is bake_probe_range over every probe, then finish_probes.
 io::IoStatus bake(const scene::Scene& scene, const BakeOptions& options, BakeResult& out);
+
+// The probes' part of a bake that needs no other probe: probes [first, first + count) of the
+// scene (a shard's, bake_part.h) measured for validity, moved by "offset", and baked; `out`
+// holds those count probes, radiance, sampling and validity, but no error_estimate_pct nor
+// validity_counts. Each probe's streams are keyed by its number in the whole scene, so its
+// numbers are the same whichever slice bakes it. "error" refuses an invalid probe here.
+io::IoStatus bake_probe_range(const scene::Scene& scene, const BakeOptions& options, std::size_t first,
+                              std::size_t count, BakeResult& out);
+
+// The rest, over every probe of the scene in `result` (the ranges' results in order): the
+// invalid probes' dilation from the valid ones, each probe's error estimate, the counts.
+// Errors: no valid probe to dilate from.
+io::IoStatus finish_probes(const scene::Scene& scene, BakeResult& result);
 
 }  // namespace shpack::bake

@@ -45,11 +45,51 @@ struct LightmapBakeResult {
   std::array<EffectCost, kEffectCount> costs{};
   GeometryCost geometry;
   EffectCost validity_cost;
-  double time_ms = 0;                 // the whole lightmap bake, wall time
+  double time_ms = 0;                 // the whole lightmap bake, wall time (merged: the parts' sum)
 };
 
 // Errors name the scene file: UVs outside [0, 1], overlapping charts, a lightmap no triangle
-// covers, and the probe bake's own errors.
+// covers, and the probe bake's own errors. It is bake_lightmap_texels of every used texel,
+// then finish_lightmaps.
 io::IoStatus bake_lightmaps(const scene::Scene& scene, const BakeOptions& options, LightmapBakeResult& out);
+
+// ---- The parts of a lightmap bake that shards split (bake_part.h) ----
+// The used texels (those a triangle covers) of all of a scene's lightmaps are numbered map
+// after map, texel by texel in each map's row order.
+struct TexelRef {
+  std::uint32_t map = 0;    // index into Scene::lightmaps
+  std::uint32_t texel = 0;  // row * width + column
+  friend bool operator==(const TexelRef&, const TexelRef&) = default;
+};
+
+// Used texels baked, before dilation and padding, which need their charts: per texel its
+// value, error estimate (% of its mean E/pi), mean backface fraction of its points, and
+// whether none of its points is valid (for dilation); effects and sampling per texel when
+// BakeOptions::keep_effects, else empty.
+struct LightmapTexelPart {
+  std::vector<TexelRef> texels;
+  std::vector<ShL2> radiance;
+  std::vector<float> error_pct, backface;
+  std::vector<std::uint8_t> invalid;
+  std::vector<std::array<ShL2, kEffectCount>> effects;
+  std::vector<std::array<EffectSampling, kEffectCount>> sampling;
+  std::array<EffectCost, kEffectCount> costs{};
+  GeometryCost geometry;
+  EffectCost validity_cost;
+  double time_ms = 0;  // wall time of baking these texels
+};
+
+// The number of points of each used texel, in the numbering above (the planner's cost).
+io::IoStatus lightmap_texel_points(const scene::Scene& scene, std::vector<std::uint32_t>& points);
+
+// Used texels [first, first + count) baked: each point's streams are keyed by its number
+// among all of the scene's lightmap points, so a texel's numbers are the same whichever
+// slice bakes it.
+io::IoStatus bake_lightmap_texels(const scene::Scene& scene, const BakeOptions& options, std::size_t first,
+                                  std::size_t count, LightmapTexelPart& out);
+
+// Every map from the part of every used texel, in order: invalid texels dilated within their
+// charts (a chart with no valid texel keeps them as baked), charts padded.
+io::IoStatus finish_lightmaps(const scene::Scene& scene, const LightmapTexelPart& all, LightmapBakeResult& out);
 
 }  // namespace shpack::bake
