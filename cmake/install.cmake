@@ -56,11 +56,12 @@ install(FILES ${shpack_bundled_maps} ${PROJECT_SOURCE_DIR}/data/hdri/README.md
               ${PROJECT_SOURCE_DIR}/data/hdri/license.txt
   DESTINATION ${CMAKE_INSTALL_DATADIR}/shpack/hdri)
 
-# The Python module (SHPACK_BUILD_PYTHON), where Debian's /usr/bin/python3 looks for packages
-# that are not Debian's own (<prefix>/lib/python3/dist-packages; on PYTHONPATH for another
-# prefix). It links lib/io and the core statically and the rest from the system, so it needs
-# no RPATH. lib/io finds the OpenImageIO module first beside the shared object it is linked
-# into (lib/io/src/oiio_plugin.h), so a relative symbolic link there names the one installed
+# The Python package shpack (SHPACK_BUILD_PYTHON: its extension _shpack, __init__.py and
+# dask.py), where Debian's /usr/bin/python3 looks for packages that are not Debian's own
+# (<prefix>/lib/python3/dist-packages/shpack; on PYTHONPATH for another prefix). The extension
+# links lib/io and the core statically and the rest from the system, so it needs no RPATH.
+# lib/io finds the OpenImageIO module first beside the shared object it is linked into
+# (lib/io/src/oiio_plugin.h), so a relative symbolic link there names the one installed
 # for the command: it holds for any --prefix and DESTDIR, and the module is not installed
 # twice. The dist-info folder holds the metadata that importlib.metadata and pip read (name,
 # version, licence); INSTALLER says that pip did not install it, and without a RECORD pip
@@ -68,9 +69,10 @@ install(FILES ${shpack_bundled_maps} ${PROJECT_SOURCE_DIR}/data/hdri/README.md
 if(TARGET shpack_python)
   set(SHPACK_PYTHON_INSTALL_DIR lib/python3/dist-packages CACHE STRING
       "Where `cmake --install` puts the Python module shpack, relative to the prefix (or absolute)")
-  install(TARGETS shpack_python LIBRARY DESTINATION ${SHPACK_PYTHON_INSTALL_DIR})
+  install(TARGETS shpack_python LIBRARY DESTINATION ${SHPACK_PYTHON_INSTALL_DIR}/shpack)
+  install(FILES ${SHPACK_PYTHON_SOURCES} DESTINATION ${SHPACK_PYTHON_INSTALL_DIR}/shpack)
   install(CODE "
-    set(py_dir \"${SHPACK_PYTHON_INSTALL_DIR}\")
+    set(py_dir \"${SHPACK_PYTHON_INSTALL_DIR}/shpack\")
     set(plugin_dir \"${SHPACK_PLUGIN_INSTALL_DIR}\")
     foreach(dir py_dir plugin_dir)
       if(NOT IS_ABSOLUTE \"\${\${dir}}\")

@@ -1,4 +1,5 @@
-// shpack_module.cpp - the Python module `shpack` (pybind11): `shpack.project(array, ...)` on
+// shpack_module.cpp - the extension `shpack._shpack` (pybind11) of the Python package `shpack`
+// (python/shpack/__init__.py re-exports it): `shpack.project(array, ...)` on
 // a NumPy array in memory and `shpack.convert(path, ...)` on a file, each returning the
 // document `shpack convert` writes, as a dict (json.loads of the same JSON text).
 //
@@ -292,7 +293,7 @@ cannot be read and RuntimeError for one that shpack cannot use, with the command
 }  // namespace
 }  // namespace shpack::python
 
-PYBIND11_MODULE(shpack, m) {
+PYBIND11_MODULE(_shpack, m) {
   using shpack::python::Options;
   namespace sp = shpack::python;
   m.doc() = "Unity L2 spherical harmonics from HDR environment maps (shpack).";

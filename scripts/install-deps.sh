@@ -26,6 +26,7 @@ packages=(
   nodejs                         # tests/io: node runs three.js on --format threejs's output
   pybind11-dev python3-dev       # python/: the shpack module (SHPACK_BUILD_PYTHON)
   python3-numpy                  # tests/python: the module's arrays, with Debian's /usr/bin/python3
+  python3-distributed            # shpack.dask: bakes on Dask distributed (python/shpack/dask.py)
 )
 
 missing=()

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -219,6 +220,13 @@ TEST(BakePart, TruncatedOrAlteredPartFilesAreRefused) {
   EXPECT_NE(error.find("SHA-256 does not match"), std::string::npos) << error;
   EXPECT_FALSE(decode_part("SHPACK", part, error));
   EXPECT_NE(error.find("not a shpack bake part"), std::string::npos) << error;
+  // A well-sealed part holding a NaN (found by fuzz_part): a bake writes none, and the merge
+  // would pass it on to every output.
+  BakePart nan = shards(scene, 2, 2)[0];
+  ASSERT_FALSE(nan.probe_result.radiance.empty());
+  nan.probe_result.radiance[0].c[1][2] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(decode_part(encode_part(nan), part, error));
+  EXPECT_NE(error.find("a NaN or an infinite coefficient"), std::string::npos) << error;
 }
 
 TEST(BakePart, ShardTextIsKOfN) {

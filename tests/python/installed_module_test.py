@@ -48,7 +48,13 @@ def cli_document(path):
 
 class InstalledModule(unittest.TestCase):
     def test_is_the_installed_module(self):
-        self.assertEqual(pathlib.Path(shpack.__file__).resolve().parent, MODULE_DIR)
+        self.assertEqual(pathlib.Path(shpack.__file__).resolve().parent, MODULE_DIR / "shpack")
+
+    def test_dask_module_is_installed_and_finds_the_installed_command(self):
+        import shpack.dask  # pylint: disable=import-outside-toplevel
+
+        self.assertEqual(pathlib.Path(shpack.dask.__file__).resolve().parent, MODULE_DIR / "shpack")
+        self.assertEqual(pathlib.Path(shpack.dask.find_command()).resolve(), CLI.resolve())
 
     def test_version_and_licence(self):
         self.assertEqual(shpack.__license__, "Apache-2.0")

@@ -37,6 +37,8 @@ struct ShardSpec {
 
 // "K/N" with 1 <= K <= N <= 1000000; false with `error` set otherwise.
 bool parse_shard(std::string_view text, ShardSpec& out, std::string& error);
+// "K/N".
+std::string shard_text(ShardSpec shard);
 
 // The rays one receiver takes at the scene's fixed counts: validity rays when the scene has
 // geometry, one closed form per light, a shadow ray per delta light or settings.shadow_samples

@@ -5,7 +5,8 @@
 // (lightmap_raster.h); each point is baked by the probes' engine (bake.h) with every effect
 // the scene asks for, gathering over its hemisphere only, and lifted off the surface by the
 // engine's ray offset. Texels whose points mostly see back faces (under geometry) are invalid
-// and take the mean of their valid neighbours in the same chart, ring by ring; then every
+// and take the mean of their valid neighbours in the same chart, ring by ring (a chart with
+// no valid texel keeps them as baked, at the fixed sample counts); then every
 // chart is padded by `padding` rings of unused texels, each the mean of its filled neighbours
 // of one chart, so that bilinear filtering does not bleed black or another chart's light.
 // Deterministic for any thread count, as the probe bake.
