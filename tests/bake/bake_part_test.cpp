@@ -191,8 +191,14 @@ TEST(BakePart, WrongPartsAreRefusedNamingThePart) {
   other[1].scene_sha256 = std::string(64, '0');
   refused(other, "part2: a part of another scene");
   other = good;
-  other[2].seed += 1;
-  refused(other, "part3: baked with seed");
+  scene::SceneSettings settings = scene.settings;
+  settings.seed += 1;
+  other[2].settings = settings_record(settings);
+  refused(other, "part3: baked with other settings: seed 2, not the scene's 1");
+  settings = scene.settings;
+  settings.max_samples = 2048;
+  other[2].settings = settings_record(settings);
+  refused(other, "part3: baked with other settings: max_samples 2048, not the scene's 1024");
   other = good;
   other[0].version = "0.0.0";
   refused(other, std::string("part1: made by shpack 0.0.0, not by this shpack ") + io::shpack_version());

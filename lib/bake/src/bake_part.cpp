@@ -111,7 +111,7 @@ io::IoStatus bake_part(const scene::Scene& scene, const BakeOptions& options, Sh
   part.scene_file = std::filesystem::absolute(scene.file).lexically_normal().string();
   part.scene_sha256 = scene.sha256;
   part.version = io::shpack_version();
-  part.seed = scene.settings.seed;
+  part.settings = settings_record(scene.settings);
   part.shard = shard;
   part.probes_total = scene.probes.size();
   part.texels_total = texel_points.size();
@@ -145,13 +145,12 @@ io::IoStatus merge_parts(const scene::Scene& scene, std::vector<BakePart>& parts
     const BakePart& p = parts[i];
     if (p.version != io::shpack_version())
       return refuse(i, "made by shpack " + p.version + ", not by this shpack " + io::shpack_version());
+    if (const std::string d = settings_difference(p.settings, settings_record(scene.settings)); !d.empty())
+      return refuse(i, "baked with other settings: " + d);
     if (p.scene_sha256 != scene.sha256 || p.probes_total != scene.probes.size() ||
         p.texels_total != texel_points.size())
       return refuse(i, "a part of another scene (SHA-256 " + p.scene_sha256.substr(0, 12) + "..., not " +
                            scene.sha256.substr(0, 12) + "... of " + scene.file.string() + ")");
-    if (p.seed != scene.settings.seed)
-      return refuse(i, "baked with seed " + std::to_string(p.seed) + ", not the scene's " +
-                           std::to_string(scene.settings.seed));
     if (p.shard.count != n || p.shard.index < 1 || p.shard.index > n)
       return refuse(i, "shard " + shard_text(p.shard) + " is not one of " + std::to_string(n));
     if (of_shard[p.shard.index - 1] != parts.size())

@@ -159,6 +159,33 @@ void costs_of(const Json& j, std::array<EffectCost, kEffectCount>& costs, Geomet
 
 std::string shard_text(ShardSpec s) { return std::to_string(s.index) + "/" + std::to_string(s.count); }
 
+std::string settings_record(const scene::SceneSettings& s) {
+  static constexpr const char* kPolicies[] = {"dilate", "keep", "error", "offset"};
+  return Json{{"seed", s.seed},
+              {"shadow_samples", s.shadow_samples},
+              {"sky_samples", s.sky_samples},
+              {"bounce_samples", s.bounce_samples},
+              {"target_error_pct", s.target_error_pct},
+              {"max_samples", s.max_samples},
+              {"validity_threshold", s.validity_threshold},
+              {"invalid_probes", kPolicies[static_cast<int>(s.invalid_probes)]},
+              {"max_offset", s.max_offset}}
+      .dump();
+}
+
+std::string settings_difference(const std::string& part, const std::string& scene) {
+  const Json a = Json::parse(part, nullptr, false), b = Json::parse(scene, nullptr, false);
+  if (!a.is_object() || !b.is_object()) return "settings that are not an object";
+  for (const auto& [key, value] : b.items()) {
+    const auto found = a.find(key);
+    if (found == a.end()) return "no " + key + " (the scene's " + value.dump() + ")";
+    if (*found != value) return key + " " + found->dump() + ", not the scene's " + value.dump();
+  }
+  for (const auto& [key, value] : a.items())
+    if (!b.contains(key)) return key + " " + value.dump() + ", which the scene's settings do not have";
+  return {};
+}
+
 std::string encode_part(const BakePart& part) {
   const BakeResult& p = part.probe_result;
   const LightmapTexelPart& t = part.texel_result;
@@ -167,7 +194,7 @@ std::string encode_part(const BakePart& part) {
       {"scene", part.scene_file},
       {"scene_sha256", part.scene_sha256},
       {"version", part.version},
-      {"seed", part.seed},
+      {"settings", Json::parse(part.settings)},
       {"shard", {part.shard.index, part.shard.count}},
       {"probes", {part.probes.first, part.probes.count, part.probes_total}},
       {"texels", {part.texels.first, part.texels.count, part.texels_total}},
@@ -215,7 +242,8 @@ bool decode_part(std::string_view bytes, BakePart& out, std::string& error) {
     part.scene_file = h.at("scene").get<std::string>();
     part.scene_sha256 = h.at("scene_sha256").get<std::string>();
     part.version = h.at("version").get<std::string>();
-    part.seed = h.at("seed").get<std::uint64_t>();
+    if (!h.at("settings").is_object()) throw std::runtime_error("settings");
+    part.settings = h.at("settings").dump();
     part.shard = {h.at("shard").at(0).get<std::uint32_t>(), h.at("shard").at(1).get<std::uint32_t>()};
     const Json& probes = h.at("probes");
     const Json& texels = h.at("texels");

@@ -14,7 +14,8 @@
 // bake's numbers bit for bit, for any N and any thread count (costs are summed; times too).
 //
 // The part file (encode_part): "SHPACKPART 1\n", a one-line JSON header (the scene's path
-// and SHA-256, shpack's version, the shard K/N, the item ranges and the totals, the seed), then
+// and SHA-256, shpack's version, the settings, the shard K/N, the item ranges and the
+// totals), then
 // the items' numbers as little-endian binary records (the probes', then the texels'), then
 // the SHA-256 of every byte before it. decode_part checks the hash first, so a truncated or
 // altered part is refused before any count in it is trusted.
@@ -56,13 +57,19 @@ struct BakePart {
   std::string scene_file;  // the scene's path where the part was baked, absolute
   std::string scene_sha256;
   std::string version;  // shpack's
-  std::uint64_t seed = 0;
+  std::string settings;  // settings_record of the scene's settings
   ShardSpec shard;
   std::uint64_t probes_total = 0, texels_total = 0;
   ItemRange probes, texels;
   BakeResult probe_result;      // bake_probe_range's, of `probes`
   LightmapTexelPart texel_result;  // bake_lightmap_texels's, of `texels`
 };
+
+// The scene's settings (every key of SceneSettings, the seed too) as one line of JSON, as a
+// part records them; and the first key where a part's record differs from a scene's,
+// "max_samples 1024, not the scene's 65536" (empty if none).
+std::string settings_record(const scene::SceneSettings& settings);
+std::string settings_difference(const std::string& part, const std::string& scene);
 
 // The ranges of shard K/N (texel_points: lightmap_texel_points's).
 void plan_shard(const scene::Scene& scene, const std::vector<std::uint32_t>& texel_points, ShardSpec shard,
@@ -79,7 +86,8 @@ std::string encode_part(const BakePart& part);
 bool decode_part(std::string_view bytes, BakePart& out, std::string& error);
 
 // The parts of one bake, any order, into what bake() and bake_lightmaps() give. Refuses,
-// naming the part by `names` (parallel to parts): a part of another scene, seed or version,
+// naming the part by `names` (parallel to parts): a part of another version, other settings
+// (naming the first that differs), another scene,
 // parts of different N, a shard twice, a shard missing, ranges that do not tile the items.
 io::IoStatus merge_parts(const scene::Scene& scene, std::vector<BakePart>& parts, const std::vector<std::string>& names,
                          BakeResult& probes, LightmapBakeResult& lightmaps);
