@@ -152,6 +152,27 @@ TEST(Lightmap, ObjTextureCoordinatesAreTheLightmapUvs) {
     for (int i = 0; i < kShCount; ++i) EXPECT_NEAR(b.result.maps[0].radiance[t].c[0][i], want.c[0][i], 1e-12);
 }
 
+TEST(Lightmap, ObjNormalsAreTheShadingNormals) {
+  // The quad of the test above, its vn tilted 45 degrees towards +X on every corner: under a
+  // uniform sky each texel is the hemisphere about the shading normal n = (1, 1, 0)/sqrt 2,
+  // (the SH of a uniform hemisphere, as above), not about the quad's own +Y. A vn of any
+  // length is made unit (here 2 (1, 1, 0)). Shading normals are kept in float (relative
+  // rounding 2^-24 = 6e-8 per component) and the L1 coefficients are linear in n with factor
+  // pi L Y_1 = 0.61, so the values are exact to 1e-7; 1e-6 leaves room.
+  shpack_test::write_scene("quad_vn.obj",
+                           "v -1 0 -1\nv -1 0 1\nv 1 0 1\nv 1 0 -1\nvt 0 0\nvt 0 1\nvt 1 1\nvt 1 0\nvn 2 2 0\n"
+                           "f 1/1/1 2/2/1 3/3/1 4/4/1\n");
+  const Lightmapped b = bake_lightmap_scene("obj_vn", R"({
+    "environment": {"type": "gradient", "zenith": 0.4, "horizon": 0.4, "ground": 0.4},
+    "geometry": [{"type": "mesh", "path": "quad_vn.obj", "lightmap": {"resolution": [2, 2]}}],
+    "effects": ["environment"]})");
+  ASSERT_TRUE(b.status.ok()) << b.status.message;
+  const double h = 1 / std::sqrt(2.0);
+  const ShL2 want = uniform_hemisphere(0.4, {h, h, 0});
+  for (std::size_t t = 0; t < 4; ++t)
+    for (int i = 0; i < kShCount; ++i) EXPECT_NEAR(b.result.maps[0].radiance[t].c[0][i], want.c[0][i], 1e-6);
+}
+
 TEST(Lightmap, GltfWithOnlyTexcoord0IsRefusedInOneLine) {
   shpack_test::write_scene("quad_uv0.gltf", gltf_quad(false));
   const Lightmapped b = bake_lightmap_scene("gltf_uv0", R"({

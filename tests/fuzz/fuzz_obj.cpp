@@ -15,8 +15,9 @@
 
 namespace {
 
-// One parse, with or without the texture coordinates (a lightmap's UVs): with them, `uv` is
-// empty or holds u, v for every vertex, each finite.
+// One parse, with or without the texture coordinates and normals (a lightmap's mesh): with
+// them, `uv` is empty or holds u, v for every vertex, and `normals` is empty or holds x, y, z
+// for every vertex (only beside uv), each finite.
 void check(std::string_view text, bool with_uv) {
   constexpr double kMaxAbs = 1.844e18;
   shpack::scene::detail::ObjMesh mesh;
@@ -34,6 +35,9 @@ void check(std::string_view text, bool with_uv) {
   if (!mesh.uv.empty() && (!with_uv || mesh.uv.size() != 2 * (mesh.vertices.size() / 3))) std::abort();
   for (const double u : mesh.uv)
     if (!std::isfinite(u)) std::abort();
+  if (!mesh.normals.empty() && (mesh.uv.empty() || mesh.normals.size() != mesh.vertices.size())) std::abort();
+  for (const double n : mesh.normals)
+    if (!std::isfinite(n)) std::abort();
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
-// Tests of the OBJ reader's texture coordinates (lib/scene/src/obj_mesh.h, parse_obj with
-// with_uv): vertices split per distinct (vertex, texture) pair, a missing texture index or
-// no `vt` at all reported without failing, bad texture indices and `vt` lines refused by
-// line, and nothing of it looked at without with_uv. Values are copied: asserted exactly.
+// Tests of the OBJ reader's texture coordinates and normals (lib/scene/src/obj_mesh.h,
+// parse_obj with with_uv): vertices split per distinct (vertex, texture, normal) corner, a
+// missing texture index or no `vt` at all reported without failing, normals only when every
+// corner has one, bad indices and `vt` / `vn` lines refused by line, and nothing of it looked
+// at without with_uv. Values are copied: asserted exactly.
 // (The glTF reader's TEXCOORD_1 and NORMAL are tested in gltf_test.cpp.)
 #include <gtest/gtest.h>
 
@@ -98,6 +99,41 @@ TEST(ObjUv, BadTextureIndicesAndVtLinesAreRefusedByLine) {
     EXPECT_TRUE(parse_obj(text, kMaxAbs, m, error)) << text << error;
     EXPECT_TRUE(m.uv.empty());
   }
+}
+
+TEST(ObjUv, NormalsOnEveryCornerSplitVerticesPerCorner) {
+  // Corner (1, 1, 2) shares position 1 and texture 1 with (1, 1, 1) but not its normal: a
+  // vertex of its own; (3, 3, 2) is shared.
+  const std::string text = kSquare + "vt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\nvn 0 0 2\n"
+                                     "f 1/1/1 2/2/1 3/3/2\nf 1/1/2 3/3/2 4/1/1\n";
+  const ObjMesh m = parse_uv(text);
+  EXPECT_EQ(m.vertices, (std::vector<double>{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 0, 1, 0}));
+  EXPECT_EQ(m.uv, (std::vector<double>{0, 0, 1, 0, 1, 1, 0, 0, 0, 0}));
+  EXPECT_EQ(m.normals, (std::vector<double>{0, 0, 1, 0, 0, 1, 0, 0, 2, 0, 0, 2, 0, 0, 1}));
+  EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{0, 1, 2, 3, 2, 4}));
+  // One corner without a normal index: no normals, vertices per (vertex, texture) pair.
+  const ObjMesh some = parse_uv(kSquare + "vt 0 0\nvt 1 0\nvn 0 0 1\nf 1/1/1 2/2 3/1/1\nf 1/1/1 3/1 4/2/1\n");
+  EXPECT_TRUE(some.normals.empty());
+  EXPECT_EQ(some.uv, (std::vector<double>{0, 0, 1, 0, 0, 0, 1, 0}));
+  EXPECT_EQ(some.indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}));
+  // Normal indices but no vn: not checked, no normals.
+  EXPECT_TRUE(parse_uv(kSquare + "vt 0 0\nf 1/1/7 2/1/7 3/1/7\n").normals.empty());
+}
+
+TEST(ObjUv, BadNormalIndicesAndVnLinesAreRefusedByLine) {
+  const std::string vn = kSquare + "vt 0 0\nvn 0 1 0\nvn 1 0 0\n";  // lines 5-7
+  EXPECT_EQ(uv_error(vn + "f 1/1/1 2/1/9 3/1/2\n"), "line 8: normal index 9 is out of range (the file has 2 normals)");
+  EXPECT_EQ(uv_error(vn + "f 1/1/-3 2/1/1 3/1/2\n"), "line 8: normal index -3 is out of range (2 normals so far)");
+  EXPECT_EQ(uv_error(vn + "f 1/1/0 2/1/1 3/1/2\n"), "line 8: normal index 0 (indices count from 1)");
+  EXPECT_EQ(uv_error(vn + "f 1/1/x 2/1/1 3/1/2\n"), "line 8: '1/1/x' is not a vertex reference");
+  EXPECT_EQ(uv_error(vn + "f 1/1/1/1 2/1/1 3/1/2\n"), "line 8: '1/1/1/1' is not a vertex reference");
+  EXPECT_EQ(uv_error(kSquare + "vt 0 0\nvn 0 nan 1\nf 1/1/1 2/1/1 3/1/1\n"), "line 6: 'nan' is not a finite double");
+  EXPECT_EQ(uv_error(kSquare + "vt 0 0\nvn 0 1\nf 1/1/1 2/1/1 3/1/1\n"), "line 6: a normal needs x, y and z");
+  // Without with_uv normals are not looked at.
+  ObjMesh m;
+  std::string error;
+  EXPECT_TRUE(parse_obj(vn + "f 1/1/9 2/1/x 3/1/2\n", kMaxAbs, m, error)) << error;
+  EXPECT_TRUE(m.normals.empty());
 }
 
 }  // namespace

@@ -729,6 +729,15 @@ void measure_errors(BakeResult& result) {
 
 }  // namespace
 
+void add_cost(EffectCost& into, const EffectCost& from) noexcept {
+  into.enabled = into.enabled || from.enabled;
+  into.time_ms += from.time_ms;
+  into.cpu_ms += from.cpu_ms;
+  into.rays += from.rays;
+  into.samples += from.samples;
+  into.analytic += from.analytic;
+}
+
 const char* effect_name(Effect effect) noexcept {
   switch (effect) {
     case Effect::Direct: return "direct";

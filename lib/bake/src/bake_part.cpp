@@ -4,21 +4,14 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <tuple>
+#include <utility>
 
 #include "probe_validity.h"
 #include "shpack/io/version.h"
 
 namespace shpack::bake {
 namespace {
-
-void add_cost(EffectCost& into, const EffectCost& from) {
-  into.enabled = into.enabled || from.enabled;
-  into.time_ms += from.time_ms;
-  into.cpu_ms += from.cpu_ms;
-  into.rays += from.rays;
-  into.samples += from.samples;
-  into.analytic += from.analytic;
-}
 
 // One tracer built per part: the scene's counts, the times summed.
 void add_geometry(GeometryCost& into, const GeometryCost& from) {
@@ -35,8 +28,36 @@ bool is_delta(const scene::SceneLight& light) {
          (light.type == LightType::Directional && light.angular_diameter == 0);
 }
 
-}  // namespace
+// Where each shard's items start: shard k (from 1) holds items [first[k - 1], first[k]).
+// Item i is shard floor(N m_i / C) + 1, m_i the running cost at its midpoint and C the total:
+// a monotone function of i, so every shard is one run of items, and the runs tile them.
+std::vector<std::size_t> shard_starts(const scene::Scene& scene, const std::vector<std::uint32_t>& texel_points,
+                                      std::uint32_t n) {
+  const double per = estimated_rays(scene);
+  const std::size_t probes = scene.probes.size(), count = probes + texel_points.size();
+  const auto cost = [&](std::size_t i) { return i < probes ? per : per * texel_points[i - probes]; };
+  double total = 0;
+  for (std::size_t i = 0; i < count; ++i) total += cost(i);
+  std::vector<std::size_t> first(std::size_t{n} + 1, count);
+  first[0] = 0;
+  double before = 0;
+  std::uint32_t next = 1;  // the next shard whose start is not yet known
+  for (std::size_t i = 0; i < count; ++i) {
+    const double c = cost(i);
+    const double at = std::floor(static_cast<double>(n) * (before + c / 2) / total);
+    const auto k = static_cast<std::uint32_t>(std::clamp(at, 0.0, static_cast<double>(n - 1)));  // 0-based
+    before += c;
+    for (; next <= k; ++next) first[next] = i;  // shards next..k start here (those before k empty)
+  }
+  return first;
+}
 
+std::pair<ItemRange, ItemRange> ranges_of(std::size_t probes, std::size_t first, std::size_t last) {
+  return {{std::min(first, probes), std::min(last, probes) - std::min(first, probes)},
+          {std::max(first, probes) - probes, std::max(last, probes) - std::max(first, probes)}};
+}
+
+}  // namespace
 
 bool parse_shard(std::string_view text, ShardSpec& out, std::string& error) {
   const std::size_t slash = text.find('/');
@@ -74,33 +95,8 @@ double estimated_rays(const scene::Scene& scene) {
 
 void plan_shard(const scene::Scene& scene, const std::vector<std::uint32_t>& texel_points, ShardSpec shard,
                 ItemRange& probes, ItemRange& texels) {
-  const double per = estimated_rays(scene);
-  const std::size_t count = scene.probes.size() + texel_points.size();
-  const auto cost = [&](std::size_t i) {
-    return i < scene.probes.size() ? per : per * texel_points[i - scene.probes.size()];
-  };
-  double total = 0;
-  for (std::size_t i = 0; i < count; ++i) total += cost(i);
-  // Item i is shard floor(N midpoint_i / C) + 1: a monotone function of i, so every shard is
-  // one run of items, and the runs tile them.
-  const auto shard_of = [&](double midpoint) {
-    const double at = std::floor(static_cast<double>(shard.count) * midpoint / total);
-    return static_cast<std::uint32_t>(std::min<double>(shard.count - 1, std::max(0.0, at))) + 1;
-  };
-  std::size_t first = count, last = count;
-  double before = 0;
-  for (std::size_t i = 0; i < count; ++i) {
-    const double c = cost(i);
-    const std::uint32_t k = shard_of(before + c / 2);
-    before += c;
-    if (k == shard.index && first == count) first = i;
-    if (k == shard.index) last = i + 1;
-    if (k > shard.index) break;
-  }
-  if (first == count) last = count;
-  const std::size_t p = scene.probes.size();
-  probes = {std::min(first, p), std::min(last, p) - std::min(first, p)};
-  texels = {std::max(first, p) - p, std::max(last, p) - std::max(first, p)};
+  const std::vector<std::size_t> first = shard_starts(scene, texel_points, shard.count);
+  std::tie(probes, texels) = ranges_of(scene.probes.size(), first[shard.index - 1], first[shard.index]);
 }
 
 io::IoStatus bake_part(const scene::Scene& scene, const BakeOptions& options, ShardSpec shard, BakePart& out) {
@@ -141,6 +137,7 @@ io::IoStatus merge_parts(const scene::Scene& scene, std::vector<BakePart>& parts
   if (io::IoStatus st = lightmap_texel_points(scene, texel_points); !st.ok()) return st;
   const std::uint32_t n = parts[0].shard.count;
   std::vector<std::size_t> of_shard(n, parts.size());
+  const std::vector<std::size_t> first = shard_starts(scene, texel_points, n);
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const BakePart& p = parts[i];
     if (p.version != io::shpack_version())
@@ -158,8 +155,8 @@ io::IoStatus merge_parts(const scene::Scene& scene, std::vector<BakePart>& parts
     for (const ProbeValidity& v : p.probe_result.validity)
       if (v.backface_shape && *v.backface_shape >= scene.geometry.size())
         return refuse(i, "a probe's backface shape is not one of the scene's shapes");
-    ItemRange want_probes, want_texels;
-    plan_shard(scene, texel_points, p.shard, want_probes, want_texels);
+    const auto [want_probes, want_texels] =
+        ranges_of(scene.probes.size(), first[p.shard.index - 1], first[p.shard.index]);
     if (p.probes != want_probes || p.texels != want_texels)
       return refuse(i, "its items are not shard " + shard_text(p.shard) + "'s of this scene");
     of_shard[p.shard.index - 1] = i;

@@ -119,14 +119,7 @@ void gather_texel(const BakeResult& baked, std::size_t a, std::size_t b, double 
 }
 
 void add_costs(std::array<EffectCost, kEffectCount>& into, const std::array<EffectCost, kEffectCount>& from) {
-  for (std::size_t e = 0; e < kEffectCount; ++e) {
-    into[e].enabled = into[e].enabled || from[e].enabled;
-    into[e].time_ms += from[e].time_ms;
-    into[e].cpu_ms += from[e].cpu_ms;
-    into[e].rays += from[e].rays;
-    into[e].samples += from[e].samples;
-    into[e].analytic += from[e].analytic;
-  }
+  for (std::size_t e = 0; e < kEffectCount; ++e) add_cost(into[e], from[e]);
 }
 
 // Every map's texels from the part of every used texel (in order), dilated and padded.
@@ -184,6 +177,62 @@ io::IoStatus finish_rasters(const scene::Scene& scene, const std::vector<Lightma
   return io::IoStatus::success();
 }
 
+// Every point of some texels, lifted off its surface, as the probes of one scene: they share
+// the tracer and the environment. Surfaces are no probes to move: validity is measured and
+// dilation done within charts.
+struct TexelPoints {
+  scene::Scene scene;
+  SurfacePoints surface;            // normals and stream ids; choose_points adds the rest
+  std::vector<std::size_t> first;   // per texel, its first point; one past the end
+};
+
+TexelPoints texel_points(const scene::Scene& scene, const std::vector<LightmapRaster>& rasters, const UsedTexels& used,
+                         const std::vector<TexelRef>& texels) {
+  TexelPoints out;
+  out.scene = scene;
+  out.scene.probes.clear();
+  out.scene.lightmaps.clear();
+  out.scene.settings.invalid_probes = scene::InvalidProbes::Keep;
+  for (const auto& [m, t] : texels) {
+    const LightmapRaster& r = rasters[m];
+    out.first.push_back(out.surface.normals.size());
+    for (std::size_t k = r.first[t]; k < r.first[t + 1]; ++k) {
+      const Vec3 p = lifted(r.points[k].position, r.points[k].geometric);
+      out.scene.probes.push_back({p.x, p.y, p.z});
+      out.surface.normals.push_back(r.points[k].normal);
+      out.surface.stream_ids.push_back(kSurfaceStreams + used.first_point[m] + k);
+    }
+  }
+  out.first.push_back(out.surface.normals.size());
+  return out;
+}
+
+// The points to bake, by validity. Points inside geometry (backface fraction above the
+// threshold: the part of the floor a box stands on) are not baked while their texel has
+// others: they would chase the error target in the dark to settings.max_samples for nothing.
+// A texel with no other is invalid, for dilation, and bakes all of its points at the fixed
+// counts: what a chart with no valid texel keeps (finish_lightmaps decides, needing the whole
+// chart). Each chosen point is grouped by its texel (u).
+TexelPoints choose_points(const TexelPoints& all, const std::vector<ProbeValidity>& validity, double threshold) {
+  TexelPoints chosen;
+  chosen.scene = all.scene;
+  chosen.scene.probes.clear();
+  const auto valid = [&](std::size_t k) { return validity[k].backface_fraction <= threshold; };
+  for (std::size_t u = 0; u + 1 < all.first.size(); ++u) {
+    bool any_valid = false;
+    for (std::size_t k = all.first[u]; k < all.first[u + 1]; ++k) any_valid = any_valid || valid(k);
+    for (std::size_t k = all.first[u]; k < all.first[u + 1]; ++k)
+      if (!any_valid || valid(k)) {
+        chosen.scene.probes.push_back(all.scene.probes[k]);
+        chosen.surface.normals.push_back(all.surface.normals[k]);
+        chosen.surface.group.push_back(static_cast<std::uint32_t>(u));
+        chosen.surface.untargeted.push_back(!any_valid);
+        chosen.surface.stream_ids.push_back(all.surface.stream_ids[k]);
+      }
+  }
+  return chosen;
+}
+
 // The texels [first, first + count) of `used` from their rasters.
 io::IoStatus bake_texels(const scene::Scene& scene, const BakeOptions& options,
                          const std::vector<LightmapRaster>& rasters, const UsedTexels& used, std::size_t first,
@@ -199,65 +248,26 @@ io::IoStatus bake_texels(const scene::Scene& scene, const BakeOptions& options,
       const std::string name = std::string("lightmap ") + pass;
       options.progress(name.c_str(), done, total);
     };
-  // The texels' points in one bake: they share the tracer and the environment.
-  scene::Scene points = scene;
-  points.probes.clear();
-  points.lightmaps.clear();
-  // Surfaces are no probes to move: validity is measured and dilation done within charts.
-  points.settings.invalid_probes = scene::InvalidProbes::Keep;
-  SurfacePoints all;
-  std::vector<std::size_t> first_of;  // per texel of the part, its first point; one past the end
-  for (const auto& [m, t] : part.texels) {
-    const LightmapRaster& r = rasters[m];
-    first_of.push_back(all.normals.size());
-    for (std::size_t k = r.first[t]; k < r.first[t + 1]; ++k) {
-      const Vec3 p = lifted(r.points[k].position, r.points[k].geometric);
-      points.probes.push_back({p.x, p.y, p.z});
-      all.normals.push_back(r.points[k].normal);
-      all.stream_ids.push_back(kSurfaceStreams + used.first_point[m] + k);
-    }
-  }
-  first_of.push_back(all.normals.size());
-  // Validity first. Points inside geometry (backface fraction above the threshold: the part
-  // of the floor a box stands on) are not baked while their texel has others: they would
-  // chase the error target in the dark to settings.max_samples for nothing. A texel with no
-  // other is invalid, for dilation, and bakes all of its points at the fixed counts: what a
-  // chart with no valid texel keeps (finish_lightmaps decides, needing the whole chart).
+  const TexelPoints all = texel_points(scene, rasters, used, part.texels);
   std::vector<ProbeValidity> validity;
-  if (io::IoStatus st = surface_validity(points, all.stream_ids, lightmap_options, validity, part.validity_cost,
-                                         part.geometry);
+  if (io::IoStatus st = surface_validity(all.scene, all.surface.stream_ids, lightmap_options, validity,
+                                         part.validity_cost, part.geometry);
       !st.ok())
     return st;
-  const double threshold = scene.settings.validity_threshold;
-  scene::Scene chosen = points;
-  chosen.probes.clear();
-  SurfacePoints surface;
-  std::vector<std::size_t> index_of;  // chosen point -> point
-  for (std::size_t u = 0; u < part.texels.size(); ++u) {
-    bool any_valid = false;
-    for (std::size_t k = first_of[u]; k < first_of[u + 1]; ++k)
-      any_valid = any_valid || validity[k].backface_fraction <= threshold;
-    for (std::size_t k = first_of[u]; k < first_of[u + 1]; ++k)
-      if (!any_valid || validity[k].backface_fraction <= threshold) {
-        chosen.probes.push_back(points.probes[k]);
-        surface.normals.push_back(all.normals[k]);
-        surface.group.push_back(static_cast<std::uint32_t>(u));
-        surface.untargeted.push_back(!any_valid);
-        surface.stream_ids.push_back(all.stream_ids[k]);
-        index_of.push_back(k);
-      }
-  }
-  surface.label = [&](std::size_t k) { return texel_label(scene, rasters, part.texels[surface.group[k]]); };
+  TexelPoints chosen = choose_points(all, validity, scene.settings.validity_threshold);
+  chosen.surface.label = [&](std::size_t k) {
+    return texel_label(scene, rasters, part.texels[chosen.surface.group[k]]);
+  };
   BakeResult baked;
-  if (io::IoStatus st = bake_surface_points(chosen, surface, lightmap_options, baked); !st.ok()) return st;
+  if (io::IoStatus st = bake_surface_points(chosen.scene, chosen.surface, lightmap_options, baked); !st.ok()) return st;
   // A texel's chosen points are consecutive, and every texel has some.
   for (std::size_t a = 0, u = 0; u < part.texels.size(); ++u) {
     std::size_t b = a;
-    while (b < index_of.size() && surface.group[b] == u) ++b;
+    while (b < chosen.surface.group.size() && chosen.surface.group[b] == u) ++b;
     double backface = 0;
-    for (std::size_t k = first_of[u]; k < first_of[u + 1]; ++k) backface += validity[k].backface_fraction;
-    backface /= static_cast<double>(first_of[u + 1] - first_of[u]);
-    gather_texel(baked, a, b, backface, surface.untargeted[a], part);
+    for (std::size_t k = all.first[u]; k < all.first[u + 1]; ++k) backface += validity[k].backface_fraction;
+    backface /= static_cast<double>(all.first[u + 1] - all.first[u]);
+    gather_texel(baked, a, b, backface, chosen.surface.untargeted[a], part);
     a = b;
   }
   add_costs(part.costs, baked.costs);

@@ -62,6 +62,88 @@ std::string number_text(double v) {
   return os.str();
 }
 
+constexpr std::int64_t kMaxVertices = std::numeric_limits<std::uint32_t>::max();
+
+// An attribute that face references may index (texture coordinates, normals): its values,
+// each reference's index (0-based, parallel to the position references), the first line with
+// a reference without one, and the range problems of its indices, reported at the end only
+// if the file has values at all (a file may name indices of an attribute it never writes).
+struct Attribute {
+  Attribute(const char* n, const char* p, std::size_t s) : name(n), plural(p), stride(s) {}
+  const char* name;    // "texture", "normal"
+  const char* plural;  // "texture coordinates", "normals"
+  std::size_t stride;  // numbers per value
+  std::vector<double> values;
+  std::vector<std::uint32_t> refs;
+  std::size_t missing_line = 0;
+  std::int64_t greatest = -1;
+  std::size_t greatest_line = 0, problem_line = 0;
+  std::string problem;
+
+  std::int64_t count() const { return static_cast<std::int64_t>(values.size() / stride); }
+  bool on_every_reference() const { return count() > 0 && missing_line == 0; }
+
+  // The index text `t` of reference `token` on `line`; so_far: count() when the face began.
+  // Returns a malformed index's problem, else empty.
+  std::string add(std::string_view token, std::string_view t, std::int64_t so_far, std::size_t line) {
+    if (t.empty()) {
+      if (missing_line == 0) missing_line = line;
+      refs.push_back(0);
+      return {};
+    }
+    std::int64_t i = 0;
+    const Parsed parsed = parse_number(t, i);
+    if (parsed == Parsed::NotANumber) return quoted(token) + " is not a vertex reference";
+    if (parsed == Parsed::OutOfRange) return std::string(name) + " index " + quoted(t) + " is out of range";
+    if (i == 0) return std::string(name) + " index 0 (indices count from 1)";
+    std::int64_t index = 0;
+    if (i > 0) {
+      if (i > kMaxVertices) return std::string(name) + " index " + std::to_string(i) + " is out of range";
+      index = i - 1;
+      if (index > greatest) {
+        greatest = index;
+        greatest_line = line;
+      }
+    } else {
+      index = so_far + i;
+      if (index < 0 && problem.empty()) {
+        problem = std::string(name) + " index " + std::to_string(i) + " is out of range (" + std::to_string(so_far) +
+                  " " + plural + " so far)";
+        problem_line = line;
+      }
+      index = std::max<std::int64_t>(index, 0);
+    }
+    refs.push_back(static_cast<std::uint32_t>(index));
+    return {};
+  }
+
+  // After the last line: an index out of range of the values, if there are any; else empty.
+  std::string range_problem(std::size_t& line) const {
+    if (count() == 0) return {};
+    if (!problem.empty()) {
+      line = problem_line;
+      return problem;
+    }
+    if (greatest < count()) return {};
+    line = greatest_line;
+    return std::string(name) + " index " + std::to_string(greatest + 1) + " is out of range (the file has " +
+           std::to_string(count()) + " " + plural + ")";
+  }
+};
+
+// A vertex of the output: a distinct (position, texture coordinate, normal) of the faces.
+struct Corner {
+  std::uint32_t position = 0, texture = 0, normal = 0;
+  bool operator==(const Corner&) const = default;
+};
+struct CornerHash {
+  std::size_t operator()(const Corner& c) const noexcept {
+    std::uint64_t h = 1469598103934665603ull;
+    for (const std::uint32_t v : {c.position, c.texture, c.normal}) h = (h ^ v) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
+  }
+};
+
 }  // namespace
 
 bool parse_obj(std::string_view text, double max_abs, ObjMesh& out, std::string& error, bool with_uv) {
@@ -72,16 +154,9 @@ bool parse_obj(std::string_view text, double max_abs, ObjMesh& out, std::string&
   std::vector<std::size_t> face_starts;
   std::int64_t greatest = -1;  // the largest positive reference (0-based) and its line
   std::size_t greatest_line = 0;
-  constexpr std::int64_t kMaxVertices = std::numeric_limits<std::uint32_t>::max();
-  // with_uv: the texture coordinates, each reference's texture index (0-based, parallel to
-  // refs), the first line with a reference without one, and the range problems of texture
-  // indices, reported at the end only if the file has texture coordinates at all.
-  std::vector<double> texcoords;
-  std::vector<std::uint32_t> texture_refs;
-  std::size_t missing_line = 0;
-  std::int64_t greatest_texture = -1;
-  std::size_t greatest_texture_line = 0, texture_problem_line = 0;
-  std::string texture_problem;
+  // with_uv: the texture coordinates and the normals.
+  Attribute texture("texture", "texture coordinates", 2);
+  Attribute normal("normal", "normals", 3);
   std::size_t line = 0;
   const auto fail = [&](const std::string& problem) {
     error = "line " + std::to_string(line) + ": " + problem;
@@ -108,24 +183,35 @@ bool parse_obj(std::string_view text, double max_abs, ObjMesh& out, std::string&
         out.vertices.push_back(v);
       }
     } else if (keyword == "vt" && with_uv) {
-      if (static_cast<std::int64_t>(texcoords.size() / 2) >= kMaxVertices) return fail("too many texture coordinates");
+      if (texture.count() >= kMaxVertices) return fail("too many texture coordinates");
       for (int k = 0; k < 2; ++k) {
         std::string_view token;
         double v = 0;
         if (!tokens.next(token)) {
           if (k == 0) return fail("a texture coordinate needs u (and v)");
-          texcoords.push_back(0.0);  // v is optional, 0 by default (the OBJ specification)
+          texture.values.push_back(0.0);  // v is optional, 0 by default (the OBJ specification)
           break;
         }
         const Parsed parsed = parse_number(token, v);
         if (parsed == Parsed::NotANumber) return fail(quoted(token) + " is not a number");
         if (parsed == Parsed::OutOfRange || !std::isfinite(v)) return fail(quoted(token) + " is not a finite double");
-        texcoords.push_back(v);
+        texture.values.push_back(v);
+      }
+    } else if (keyword == "vn" && with_uv) {
+      if (normal.count() >= kMaxVertices) return fail("too many normals");
+      for (int k = 0; k < 3; ++k) {
+        std::string_view token;
+        double v = 0;
+        if (!tokens.next(token)) return fail("a normal needs x, y and z");
+        const Parsed parsed = parse_number(token, v);
+        if (parsed == Parsed::NotANumber) return fail(quoted(token) + " is not a number");
+        if (parsed == Parsed::OutOfRange || !std::isfinite(v)) return fail(quoted(token) + " is not a finite double");
+        normal.values.push_back(v);
       }
     } else if (keyword == "f") {
       const std::size_t start = refs.size();
       const auto so_far = static_cast<std::int64_t>(out.vertices.size() / 3);
-      const auto texcoords_so_far = static_cast<std::int64_t>(texcoords.size() / 2);
+      const std::int64_t texture_so_far = texture.count(), normal_so_far = normal.count();
       std::string_view token;
       while (tokens.next(token)) {
         std::int64_t i = 0;
@@ -149,43 +235,20 @@ bool parse_obj(std::string_view text, double max_abs, ObjMesh& out, std::string&
         }
         refs.push_back(static_cast<std::uint32_t>(index));
         if (!with_uv) continue;
-        // The texture index: between the first and a second '/', empty or absent if none.
+        // i/t/n: the texture index between the first and a second '/', the normal's after the
+        // second; either empty or absent if none.
         const std::size_t slash = token.find('/');
-        std::string_view t = slash == std::string_view::npos ? std::string_view() : token.substr(slash + 1);
-        t = t.substr(0, t.find('/'));
-        if (t.empty()) {
-          if (missing_line == 0) missing_line = line;
-          texture_refs.push_back(0);
-          continue;
-        }
-        std::int64_t ti = 0;
-        const Parsed tparsed = parse_number(t, ti);
-        if (tparsed == Parsed::NotANumber) return fail(quoted(token) + " is not a vertex reference");
-        if (tparsed == Parsed::OutOfRange) return fail("texture index " + quoted(t) + " is out of range");
-        if (ti == 0) return fail("texture index 0 (indices count from 1)");
-        std::int64_t tindex = 0;
-        if (ti > 0) {
-          if (ti > kMaxVertices) return fail("texture index " + std::to_string(ti) + " is out of range");
-          tindex = ti - 1;
-          if (tindex > greatest_texture) {
-            greatest_texture = tindex;
-            greatest_texture_line = line;
-          }
-        } else {
-          tindex = texcoords_so_far + ti;
-          if (tindex < 0 && texture_problem.empty()) {
-            texture_problem = "texture index " + std::to_string(ti) + " is out of range (" +
-                              std::to_string(texcoords_so_far) + " texture coordinates so far)";
-            texture_problem_line = line;
-          }
-          tindex = std::max<std::int64_t>(tindex, 0);
-        }
-        texture_refs.push_back(static_cast<std::uint32_t>(tindex));
+        const std::string_view rest = slash == std::string_view::npos ? std::string_view() : token.substr(slash + 1);
+        const std::size_t second = rest.find('/');
+        const std::string_view n = second == std::string_view::npos ? std::string_view() : rest.substr(second + 1);
+        if (std::string p = texture.add(token, rest.substr(0, second), texture_so_far, line); !p.empty()) return fail(p);
+        if (std::string p = normal.add(token, n, normal_so_far, line); !p.empty()) return fail(p);
       }
       if (refs.size() - start < 3) return fail("a face needs at least 3 vertices");
       face_starts.push_back(start);
     }
-    // Anything else (vn, vt, o, g, s, l, p, usemtl, mtllib, ...) carries no surface.
+    // Anything else (o, g, s, l, p, usemtl, mtllib, ...; vt and vn without with_uv) carries
+    // no surface.
   }
   const auto count = static_cast<std::int64_t>(out.vertices.size() / 3);
   if (greatest >= count) {
@@ -197,39 +260,37 @@ bool parse_obj(std::string_view text, double max_abs, ObjMesh& out, std::string&
     error = "no faces";
     return false;
   }
-  // with_uv: a vertex per distinct (position, texture coordinate) pair, in first-use order,
-  // when every reference has a texture index; `emitted` maps refs to those vertices.
+  // with_uv: a vertex per distinct (position, texture coordinate[, normal]) of the faces, in
+  // first-use order, when every reference has a texture index (and a normal index: else no
+  // normals); `emitted` maps refs to those vertices.
   std::vector<std::uint32_t> emitted;
   std::vector<double> split_vertices;
   if (with_uv) {
-    const auto texture_count = static_cast<std::int64_t>(texcoords.size() / 2);
-    if (texture_count > 0 && !texture_problem.empty()) {
-      line = texture_problem_line;
-      return fail(texture_problem);
-    }
-    if (texture_count > 0 && greatest_texture >= texture_count) {
-      line = greatest_texture_line;
-      return fail("texture index " + std::to_string(greatest_texture + 1) + " is out of range (the file has " +
-                  std::to_string(texture_count) + " texture coordinates)");
-    }
-    if (texture_count == 0 || missing_line != 0) {
-      out.uv_missing_line = texture_count == 0 ? 0 : missing_line;
+    for (const Attribute* a : {&texture, &normal})
+      if (std::string problem = a->range_problem(line); !problem.empty()) return fail(problem);
+    if (!texture.on_every_reference()) {
+      out.uv_missing_line = texture.count() == 0 ? 0 : texture.missing_line;
     } else {
-      std::unordered_map<std::uint64_t, std::uint32_t> vertex_of;  // (position << 32 | texture) -> vertex
+      const bool normals = normal.on_every_reference();
+      std::unordered_map<Corner, std::uint32_t, CornerHash> vertex_of;
       vertex_of.reserve(refs.size());
       emitted.reserve(refs.size());
       for (std::size_t r = 0; r < refs.size(); ++r) {
-        const std::uint64_t key = (std::uint64_t{refs[r]} << 32) | texture_refs[r];
+        const Corner key{refs[r], texture.refs[r], normals ? normal.refs[r] : 0};
         const auto [it, added] = vertex_of.emplace(key, static_cast<std::uint32_t>(split_vertices.size() / 3));
         if (added) {
           if (split_vertices.size() / 3 >= static_cast<std::size_t>(kMaxVertices)) {
-            error = "line " + std::to_string(line) + ": too many distinct (vertex, texture) pairs";
+            error = "line " + std::to_string(line) + ": too many distinct (vertex, texture, normal) corners";
             return false;
           }
-          const double* p = &out.vertices[3 * std::size_t{refs[r]}];
+          const double* p = &out.vertices[3 * std::size_t{key.position}];
           split_vertices.insert(split_vertices.end(), p, p + 3);
-          out.uv.push_back(texcoords[2 * std::size_t{texture_refs[r]}]);
-          out.uv.push_back(texcoords[2 * std::size_t{texture_refs[r]} + 1]);
+          const double* t = &texture.values[2 * std::size_t{key.texture}];
+          out.uv.insert(out.uv.end(), t, t + 2);
+          if (normals) {
+            const double* nv = &normal.values[3 * std::size_t{key.normal}];
+            out.normals.insert(out.normals.end(), nv, nv + 3);
+          }
         }
         emitted.push_back(it->second);
       }

@@ -367,6 +367,20 @@ void place_mesh(SceneShape& shape, const std::vector<double>& positions, std::ve
   shape.indices = std::move(indices);
 }
 
+// A mesh's shading normals into the shape, made unit (a zero one stays zero: the lightmap
+// raster then takes the triangle's) and mirrored as its positions are (a uniform scale keeps
+// their direction, up to a sign the raster settles by each triangle's front).
+void place_normals(SceneShape& shape, const std::vector<double>& normals, bool mirrored) {
+  const double z_sign = mirrored ? -1.0 : 1.0;
+  for (std::size_t k = 0; k + 2 < normals.size(); k += 3) {
+    const double x = normals[k], y = normals[k + 1], z = z_sign * normals[k + 2];
+    const double length = std::hypot(x, y, z);  // no overflow for huge components
+    const double s = length > 0 ? 1.0 / length : 0.0;
+    shape.normals.insert(shape.normals.end(), {static_cast<float>(s * x), static_cast<float>(s * y),
+                                               static_cast<float>(s * z)});
+  }
+}
+
 // OBJ through obj_mesh.h, glTF through gltf_mesh.h; then scale, mirror (OBJ: when asked;
 // glTF: always, its frame being right-handed +Y up) and offset. A glTF mesh becomes one
 // shape per material it uses (docs/scenes.md): the material's baseColorFactor is the
@@ -394,9 +408,12 @@ std::vector<SceneShape> read_mesh(const SceneShape& entry, const Json& j, const 
                                                   ": a face without texture coordinates; a lightmap needs UVs on every face"
                                             : "has no texture coordinates (vt); a lightmap needs UVs");
     shapes.push_back(entry);
-    place_mesh(shapes.back(), mesh.vertices, std::move(mesh.indices), j, path, value_or(j, "mirror_z", false),
-               mesh_error);
-    if (lightmapped) shapes.back().uv.assign(mesh.uv.begin(), mesh.uv.end());  // OBJ's v runs up, as Unity's
+    const bool mirrored = value_or(j, "mirror_z", false);
+    place_mesh(shapes.back(), mesh.vertices, std::move(mesh.indices), j, path, mirrored, mesh_error);
+    if (lightmapped) {
+      shapes.back().uv.assign(mesh.uv.begin(), mesh.uv.end());  // OBJ's v runs up, as Unity's
+      place_normals(shapes.back(), mesh.normals, mirrored);
+    }
     return shapes;
   }
   if (ext != ".gltf" && ext != ".glb") throw mesh_error("meshes are read from .obj, .gltf and .glb files");
@@ -428,10 +445,7 @@ std::vector<SceneShape> read_mesh(const SceneShape& entry, const Json& j, const 
     if (lightmapped) {  // glTF's v runs down from the image's top, Unity's up from its bottom
       for (std::size_t k = 0; k + 1 < part.uv1.size(); k += 2)
         shape.uv.insert(shape.uv.end(), {static_cast<float>(part.uv1[k]), static_cast<float>(1.0 - part.uv1[k + 1])});
-      const double z_sign = right_handed ? -1.0 : 1.0;  // normals mirror as positions do (a uniform scale keeps them)
-      for (std::size_t k = 0; k + 2 < part.normals.size(); k += 3)
-        shape.normals.insert(shape.normals.end(), {static_cast<float>(part.normals[k]), static_cast<float>(part.normals[k + 1]),
-                                                   static_cast<float>(z_sign * part.normals[k + 2])});
+      place_normals(shape, part.normals, right_handed);
     }
     shapes.push_back(std::move(shape));
   }

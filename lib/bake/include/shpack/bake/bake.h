@@ -67,6 +67,9 @@ struct EffectCost {
   std::uint64_t analytic = 0;  // closed forms evaluated (shadows: pairs that needed no ray)
 };
 
+// The costs of two passes over parts of the receivers, as one: counts and times summed.
+void add_cost(EffectCost& into, const EffectCost& from) noexcept;
+
 // Building the ray tracer's acceleration structure (when the scene has geometry: an effect
 // that traces rays, or probe validity, needs it).
 struct GeometryCost {

@@ -70,7 +70,7 @@ struct SceneShape {
   // when a lightmap is asked for on this shape; empty otherwise.
   std::vector<float> uv;
   // Unit shading normals (xyz per vertex) of a lightmapped mesh whose file has them (glTF
-  // NORMAL), in Unity's frame; empty: the triangles' own normals.
+  // NORMAL, OBJ vn on every face corner), in Unity's frame; empty: the triangles' own normals.
   std::vector<float> normals;
 };
 
