@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ostream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -27,23 +29,28 @@ constexpr std::uint32_t kW = 256, kH = 128;
 constexpr std::size_t kDense = 8192;  // about 2.2 degrees apart: 16 per fit direction
 constexpr std::size_t kOracleChecks = 24;
 
-struct Case {
+struct SharpMap {
+  const char* name;
   std::vector<Disc> discs;
+  friend void PrintTo(const SharpMap& m, std::ostream* os) { *os << m.name; }
 };
 
 // A sun, lamps and a softbox: five sources for four lights, so that a source left in the SH
 // and each light's own horizon put kinks into the error.
-const std::vector<Disc> kStudio = {
-    {from_angles(40, 30), 1.5, {30000, 27000, 22000}}, {from_angles(10, -80), 2.5, {2000, 1500, 900}},
-    {from_angles(-5, 140), 2.0, {1500, 1800, 2500}},   {from_angles(25, -150), 6.0, {150, 150, 160}},
-    {from_angles(60, -20), 1.5, {3000, 3000, 3000}},
-};
+const SharpMap kStudio = {"studio",
+                          {{from_angles(40, 30), 1.5, {30000, 27000, 22000}},
+                           {from_angles(10, -80), 2.5, {2000, 1500, 900}},
+                           {from_angles(-5, 140), 2.0, {1500, 1800, 2500}},
+                           {from_angles(25, -150), 6.0, {150, 150, 160}},
+                           {from_angles(60, -20), 1.5, {3000, 3000, 3000}}}};
 // Several lamps of one size, no sun: the error's peaks are spread over many horizons.
-const std::vector<Disc> kLamps = {
-    {from_angles(15, 0), 2.0, {900, 800, 700}},    {from_angles(15, 90), 2.0, {700, 800, 900}},
-    {from_angles(15, 180), 2.0, {800, 900, 700}},  {from_angles(15, -90), 2.0, {900, 700, 800}},
-    {from_angles(-30, 45), 2.0, {600, 600, 600}},  {from_angles(70, -135), 2.0, {800, 800, 800}},
-};
+const SharpMap kLamps = {"lamps",
+                         {{from_angles(15, 0), 2.0, {900, 800, 700}},
+                          {from_angles(15, 90), 2.0, {700, 800, 900}},
+                          {from_angles(15, 180), 2.0, {800, 900, 700}},
+                          {from_angles(15, -90), 2.0, {900, 700, 800}},
+                          {from_angles(-30, 45), 2.0, {600, 600, 600}},
+                          {from_angles(70, -135), 2.0, {800, 800, 800}}}};
 
 // A direction set none of whose points is a fit or check direction: a Fibonacci set turned
 // about two axes.
@@ -54,10 +61,10 @@ Dir3 dense_direction(std::size_t i) {
   return {r.x, std::cos(b) * r.y - std::sin(b) * r.z, std::sin(b) * r.y + std::cos(b) * r.z};
 }
 
-class SharpSources : public testing::TestWithParam<std::vector<Disc>> {};
+class SharpSources : public testing::TestWithParam<SharpMap> {};
 
 TEST_P(SharpSources, TheReportedMaxIsNotATrainingError) {
-  const shpack_test::DiscMap map = shpack_test::draw_discs(kW, kH, GetParam());
+  const shpack_test::DiscMap map = shpack_test::draw_discs(kW, kH, GetParam().discs);
   std::vector<float> pixels = map.image.rgb;
   MapImage image;
   image.image = make_view(pixels.data(), kW, kH, 3);
@@ -121,7 +128,8 @@ TEST_P(SharpSources, TheReportedMaxIsNotATrainingError) {
               out.view_error->bound_pct, between.max_pct, true_max, there);
 }
 
-INSTANTIATE_TEST_SUITE_P(Maps, SharpSources, testing::Values(kStudio, kLamps));
+INSTANTIATE_TEST_SUITE_P(Maps, SharpSources, testing::Values(kStudio, kLamps),
+                         [](const testing::TestParamInfo<SharpMap>& info) { return std::string(info.param.name); });
 
 }  // namespace
 }  // namespace shpack
