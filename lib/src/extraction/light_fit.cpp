@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <new>
 #include <numbers>
 #include <utility>
@@ -126,8 +127,10 @@ std::vector<std::size_t> most_broken(const ChannelRows& rows, const std::vector<
 // whole, so its optimum u is at least the whole's; one that keeps every row is then the
 // whole's optimum (up to kLightFitRowTolerance). Returns the fitted max error, the largest
 // |H_i x - b_i| over every direction, sets x, and leaves in `binding` the working directions
-// whose residual is within kLightFitBindingTolerance of the optimum's bound.
-double fit_channel(const ChannelRows& rows, std::vector<std::size_t>& binding, std::vector<double>& x) {
+// whose residual is within kLightFitBindingTolerance of the optimum's bound. Each working set's
+// error is a lower bound of the whole's, so once one reaches `stop` the fit ends there and
+// returns it, `binding` left as it was: the caller only needed to know it is not below `stop`.
+double fit_channel(const ChannelRows& rows, std::vector<std::size_t>& binding, double stop, std::vector<double>& x) {
   const std::size_t lights = rows.columns.lights, cols = lights + 1;
   double t0 = 0;
   for (std::size_t i = 0; i < rows.count(); ++i) t0 = std::max(t0, std::abs(rows.b(i)));
@@ -145,6 +148,7 @@ double fit_channel(const ChannelRows& rows, std::vector<std::size_t>& binding, s
     const LpSolution solution = maximize(lp);
     std::copy_n(solution.x.begin(), lights, x.begin());
     const double t = t0 - solution.x[lights];
+    if (t >= stop) return t;
     double fitted = 0;
     added = most_broken(rows, working, x, t, fitted);
     if (!added.empty()) continue;
@@ -156,20 +160,29 @@ double fit_channel(const ChannelRows& rows, std::vector<std::size_t>& binding, s
   }
 }
 
-// The fit at unit directions `unit`.
-LightFit fit_unit(const LightFitProblem& problem, std::span<const Dir3> unit) {
+
+// The fit at unit directions `unit`; once a channel's error is known to reach stop_pct
+// (fit_channel) the fit ends, with that channel's max_pct a lower bound at or above stop_pct
+// and the others' unset.
+LightFit fit_unit(const LightFitProblem& problem, std::span<const Dir3> unit,
+                  double stop_pct = std::numeric_limits<double>::infinity()) {
   const LightColumns columns = light_columns(*problem.samples, unit, problem.band_factors);
   LightFit out;
   out.irradiance.assign(unit.size(), {});
   std::vector<double> x;
   for (int c = 0; c < kChannelCount; ++c) {
     if (problem.truth[c].empty()) continue;  // a channel whose mean is not positive: no light
-    out.max_pct[c] = 100.0 * fit_channel({columns, problem.truth[c], problem.sh[c]}, problem.binding[c], x);
+    out.max_pct[c] = 100.0 * fit_channel({columns, problem.truth[c], problem.sh[c]}, problem.binding[c], stop_pct / 100, x);
+    if (out.max_pct[c] >= stop_pct) break;
     for (std::size_t k = 0; k < unit.size(); ++k)
       out.irradiance[k][c] = std::numbers::pi * problem.samples->mean[c] * x[k];
   }
   return out;
 }
+
+// Above the rounding of a working set's optimum against the whole's (a few ulps of errors of a
+// few percent), so that a stopped fit is one the whole fit would not have taken either.
+constexpr double kPruneMarginPct = 1e-9;
 
 double worst_channel(const LightFit& fit) noexcept { return std::max({fit.max_pct[0], fit.max_pct[1], fit.max_pct[2]}); }
 
@@ -214,7 +227,9 @@ bool sweep(const LightFitProblem& problem, std::span<const Dir3> sources, std::s
     for (const Dir3& move : compass(directions[k], step)) {
       if (angle_deg(move, sources[k]) > reach_deg[k]) continue;
       trial[k] = move;
-      const double error = worst_channel(fit_unit(problem, trial));
+      // A fit known not to come below `best` is stopped there (fit_unit): the same moves are
+      // taken, most trials cost a working set or two.
+      const double error = worst_channel(fit_unit(problem, trial, best + kPruneMarginPct));
       if (error < best) {
         best = error, directions[k] = move, moved = true;
         break;
