@@ -44,7 +44,9 @@
 // V. Torczon, "Optimization by direct search", SIAM Review 45 (2003), sec. 3] over each
 // light's two tangent directions, steps of kLightRefineStepsDeg, taking the first move that
 // lowers it, until no move at the
-// finest step does (or kLightRefineSweeps sweeps over the lights at one step). Deterministic:
+// finest step does (or kLightRefineSweeps sweeps over the lights at one step). A trial's fit
+// ends as soon as a working set's error, a lower bound of the whole's, shows it cannot lower
+// the best (most trials do not), so the same moves are taken for far less. Deterministic:
 // the same inputs give the same directions.
 //
 // The fit sees the view directions only, and the rounding of the packed floats and the
@@ -76,13 +78,15 @@ struct LightFit {
 // there). It refers to `samples`, which must outlive it.
 // A problem is used by one thread at a time: each fit leaves in `binding` the directions whose
 // error rows bind at its optimum, and the next fit of the channel starts its working set from
-// them (the lights move little between fits, so the rows that bind do too); the optimum does
-// not depend on where the working set started.
+// them (the lights move little between fits, so the rows that bind do too), and in `last_pct`
+// its channels' errors, the order a fit that may stop early tries them in; the optimum does
+// not depend on either.
 struct LightFitProblem {
   const ViewSamples* samples = nullptr;
   std::array<double, 3> band_factors{};
   std::array<std::vector<double>, kChannelCount> truth, sh;
   mutable std::array<std::vector<std::size_t>, kChannelCount> binding;
+  mutable std::array<double, kChannelCount> last_pct{};
 };
 
 // The problem of the map whose exact E/pi `samples` holds and whose radiance SH is `projected`

@@ -163,20 +163,25 @@ double fit_channel(const ChannelRows& rows, std::vector<std::size_t>& binding, d
 
 // The fit at unit directions `unit`; once a channel's error is known to reach stop_pct
 // (fit_channel) the fit ends, with that channel's max_pct a lower bound at or above stop_pct
-// and the others' unset.
+// and the others' unset. The channels go worst first by the last complete fit (the one most
+// likely to reach stop_pct; a complete fit does not depend on the order).
 LightFit fit_unit(const LightFitProblem& problem, std::span<const Dir3> unit,
                   double stop_pct = std::numeric_limits<double>::infinity()) {
   const LightColumns columns = light_columns(*problem.samples, unit, problem.band_factors);
   LightFit out;
   out.irradiance.assign(unit.size(), {});
+  std::array<int, kChannelCount> order = {0, 1, 2};
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return problem.last_pct[a] > problem.last_pct[b]; });
   std::vector<double> x;
-  for (int c = 0; c < kChannelCount; ++c) {
+  for (int c : order) {
     if (problem.truth[c].empty()) continue;  // a channel whose mean is not positive: no light
     out.max_pct[c] = 100.0 * fit_channel({columns, problem.truth[c], problem.sh[c]}, problem.binding[c], stop_pct / 100, x);
-    if (out.max_pct[c] >= stop_pct) break;
+    if (out.max_pct[c] >= stop_pct) return out;
     for (std::size_t k = 0; k < unit.size(); ++k)
       out.irradiance[k][c] = std::numbers::pi * problem.samples->mean[c] * x[k];
   }
+  problem.last_pct = out.max_pct;
   return out;
 }
 
@@ -250,7 +255,7 @@ double angle_deg(const Dir3& a, const Dir3& b) noexcept {
 Status prepare_light_fit(const ViewSamples& samples, const ShL2& projected, const std::array<double, 3>& band_factors,
                          LightFitProblem& out) noexcept {
   try {
-    LightFitProblem problem{&samples, band_factors, {}, {}, {}};
+    LightFitProblem problem{&samples, band_factors, {}, {}, {}, {}};
     ShL2 banded = projected;
     for (auto& channel : banded.c)
       for (int i = 0; i < kShCount; ++i) channel[i] *= band_factors[kBand[i]];
