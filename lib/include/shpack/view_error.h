@@ -25,9 +25,9 @@
 // even numerators), then a pattern search from each of the kViewSearchSeeds worst of them
 // (at least kViewSeedSeparationDeg apart): kViewSearchPoints points on a circle of radius r
 // about the current point, moving to the worst point when it is worse, else halving r, from
-// kViewSearchStartDeg down to kViewSearchEndDeg (at most 4 moves at one radius). max_pct, its channel and direction, and
-// bound_pct are taken over every direction evaluated; rms_pct stays the mean over the 512
-// (the searched ones are not a uniform sample).
+// kViewSearchStartDeg down to kViewSearchEndDeg (at most 4 moves at one radius). max_pct,
+// its channel and direction, and bound_pct are taken over every direction evaluated; rms_pct
+// stays the mean over the 512 (the searched ones are not a uniform sample).
 //
 // The tolerance. Near its peak the error is Lipschitz with a constant s of about 8 m per
 // radian (m the channel's mean): the truth's gradient is |grad E/pi| = |int_{n.w > 0} L w_t dw|

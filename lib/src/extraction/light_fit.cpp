@@ -176,7 +176,8 @@ LightFit fit_unit(const LightFitProblem& problem, std::span<const Dir3> unit,
   std::vector<double> x;
   for (int c : order) {
     if (problem.truth[c].empty()) continue;  // a channel whose mean is not positive: no light
-    out.max_pct[c] = 100.0 * fit_channel({columns, problem.truth[c], problem.sh[c]}, problem.binding[c], stop_pct / 100, x);
+    const ChannelRows rows{columns, problem.truth[c], problem.sh[c]};
+    out.max_pct[c] = 100.0 * fit_channel(rows, problem.binding[c], stop_pct / 100, x);
     if (out.max_pct[c] >= stop_pct) return out;
     for (std::size_t k = 0; k < unit.size(); ++k)
       out.irradiance[k][c] = std::numbers::pi * problem.samples->mean[c] * x[k];

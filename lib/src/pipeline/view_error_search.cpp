@@ -109,12 +109,14 @@ Status searched_view_error(const ViewSamples& samples, const ViewTransform& tran
     for (const Evaluated& p : points) ViewComparison::fold(p.error, e);
     const std::vector<Evaluated> seeds = seeds_of(points);
     std::vector<ViewError> found(seeds.size(), e);  // each seed its own slot, folded in order
-    detail::run_queue(static_cast<std::uint32_t>(seeds.size()), samples.threads, [&](std::uint32_t k, unsigned) noexcept {
+    const auto count = static_cast<std::uint32_t>(seeds.size());
+    detail::run_queue(count, samples.threads, [&](std::uint32_t k, unsigned) noexcept {
       search_from(*samples.reference, compare, seeds[k], found[k]);
     });
     for (const ViewError& f : found) {
-      if (f.max_pct > e.max_pct) e.max_pct = f.max_pct, e.max_channel = f.max_channel, e.max_direction = f.max_direction;
-      e.bound_pct = std::max(e.bound_pct, f.bound_pct);
+      const double bound = std::max(e.bound_pct, f.bound_pct);
+      if (f.max_pct > e.max_pct) e = f;
+      e.bound_pct = bound;
     }
     out = e;
     return Status::success();
