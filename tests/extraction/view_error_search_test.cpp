@@ -3,7 +3,8 @@
 // more of them than lights), after --extract-lights 4 --window optimal, the reported max is
 // not below the max over a denser independent set of directions by more than the search's
 // tolerance, nor below the brute-force oracle's truth by more than that and the reference's
-// bound; and the error it reports is one the oracle finds at the direction it names.
+// bound; and the error it reports is one the oracle finds at the direction it names. The
+// search gives the same result on any number of threads.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -126,6 +127,27 @@ TEST_P(SharpSources, TheReportedMaxIsNotATrainingError) {
   EXPECT_NEAR(there, out.view_error->max_pct, out.view_error->bound_pct + bound);
   std::printf("reported %.3f (bound %.3f)  dense %.3f  oracle %.3f  at reported %.3f\n", out.view_error->max_pct,
               out.view_error->bound_pct, between.max_pct, true_max, there);
+}
+
+TEST(ViewErrorSearch, DoesNotDependOnTheThreadCount) {
+  // The check directions and the seeds' searches run on the conversion's threads, each into
+  // its own slot, folded in order (view_error_search.cpp): the same bits on 1 and 2 threads.
+  const shpack_test::DiscMap map = shpack_test::draw_discs(kW, kH, kLamps.discs);
+  std::vector<ViewError> errors;
+  for (unsigned threads : {1u, 2u}) {
+    std::vector<float> pixels = map.image.rgb;
+    MapImage image;
+    image.image = make_view(pixels.data(), kW, kH, 3);
+    image.writable = pixels.data();
+    ConvertOptions options;
+    options.extract_lights = 2;
+    options.threads = threads;
+    Conversion out;
+    ASSERT_TRUE(convert_map(image, options, out).ok());
+    ASSERT_TRUE(out.view_error);
+    errors.push_back(*out.view_error);
+  }
+  EXPECT_EQ(errors[0], errors[1]);
 }
 
 INSTANTIATE_TEST_SUITE_P(Maps, SharpSources, testing::Values(kStudio, kLamps),
