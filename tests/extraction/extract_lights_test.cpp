@@ -63,9 +63,11 @@ TEST(ExtractLights, EachLightChosenLowersTheErrorOfWhatUnityShows) {
   // Each disc is one candidate at every scale: its radiance is constant and its edge sharp, so
   // every threshold finds the same region (light_candidates_test, at one scale).
   EXPECT_EQ(out.light_candidates, kDiscs.size() * kLightChoiceScales.size());
-  // The first starts from the plain conversion's error: the measure of no light is stage 4 on
-  // the same exact projection, so the very same number.
-  double before = plain.view_error->max_pct;
+  // The first starts from the plain conversion's error at the fit directions: the measure of
+  // no light is stage 4 on the same exact projection, and the plain conversion's reported max
+  // is searched from those directions (view_error.h), so at least that.
+  EXPECT_LE(out.lights[0].error_before_pct, plain.view_error->max_pct);
+  double before = out.lights[0].error_before_pct;
   std::vector<bool> disc_taken(kDiscs.size(), false);
   for (const ExtractedLight& light : out.lights) {
     EXPECT_EQ(light.error_before_pct, before);
@@ -85,8 +87,9 @@ TEST(ExtractLights, EachLightChosenLowersTheErrorOfWhatUnityShows) {
     EXPECT_FALSE(disc_taken[which]) << which;
     disc_taken[which] = true;
   }
-  // The result is what the last step measured: the same exact projection less the same SH.
-  EXPECT_EQ(out.view_error->max_pct, before);
+  // The result is what the last step measured, the same exact projection less the same SH,
+  // with its max searched for from the directions the step measured at: at least that.
+  EXPECT_GE(out.view_error->max_pct, before);
   EXPECT_LT(out.view_error->max_pct, plain.view_error->max_pct);
   EXPECT_TRUE(out.sh.radiance != plain.sh.radiance);  // the lights are out of the SH
 }
@@ -111,13 +114,13 @@ TEST(ExtractLights, TheFirstChoiceIsTheSameWhateverTheLimit) {
   EXPECT_EQ(one.lights[0].light.light.texels, many.lights[0].light.light.texels);
   EXPECT_EQ(one.lights[0].light.light.radius_deg, many.lights[0].light.light.radius_deg);
   EXPECT_EQ(one.lights[0].error_after_pct, many.lights[0].error_after_pct);
-  EXPECT_EQ(one.view_error->max_pct, one.lights[0].error_after_pct);
+  EXPECT_GE(one.view_error->max_pct, one.lights[0].error_after_pct);  // searched from the step's directions
 }
 
 TEST(ExtractLights, TheFinishOptionsAreInTheMeasure) {
   // Rotation, intensity and the optimal window change what Unity shows: the measure of no
-  // light is still the plain conversion's error with the same options, and the result's error
-  // the last light's.
+  // light is still the plain conversion's error with the same options at the fit directions,
+  // and the result's error the last light's there (both searched further: at least those).
   const shpack_test::DiscMap map = shpack_test::draw_discs(kW, kH, kDiscs);
   ConvertOptions plain_options;
   plain_options.finish.rotate_deg = 30;
@@ -128,8 +131,8 @@ TEST(ExtractLights, TheFinishOptionsAreInTheMeasure) {
   const Conversion plain = convert(map.image, plain_options);
   const Conversion out = convert(map.image, options);
   ASSERT_GE(out.lights.size(), 1u);
-  EXPECT_EQ(out.lights[0].error_before_pct, plain.view_error->max_pct);
-  EXPECT_EQ(out.view_error->max_pct, out.lights.back().error_after_pct);
+  EXPECT_LE(out.lights[0].error_before_pct, plain.view_error->max_pct);
+  EXPECT_GE(out.view_error->max_pct, out.lights.back().error_after_pct);
   for (int c = 0; c < kChannelCount; ++c) EXPECT_GE(out.sh.min_e_over_pi[c].value, -1e-9);  // optimal: non-negative
 }
 

@@ -56,7 +56,9 @@ TEST(LightExtractionCli, CommandWritesTheChosenLightsOrAnEmptyArray) {
     // The light within its reach of its source's centre (light_fit.h).
     EXPECT_LE(light["offset_deg"].get<double>(), light_reach_deg(light["angular_radius_deg"].get<double>()) + 1e-9);
   }
-  EXPECT_EQ(before, j["diagnostics"]["unity_view_error_max_pct"].get<double>());  // the last light's is the result's
+  // The result's max is searched from the directions the last light's was measured at
+  // (view_error.h): at least it.
+  EXPECT_LE(before, j["diagnostics"]["unity_view_error_max_pct"].get<double>());
   EXPECT_FALSE(j.contains("sun"));
 
   run = shpack_io_test::run_shpack(dir, {"convert", sunset, "--extract-lights", "0"});

@@ -97,8 +97,9 @@ static partial class ShpackMonoTest
         if (native.Sun != null && document.Lights.Count == 1) CheckSameLight(native.Sun, document.Lights[0], "sun");
 
         // --extract-lights: the same lights, in the same order, and the view error of the
-        // result, which is that of the last light chosen up to the float rounding of the fill
-        // levels (light_candidates.h: 2^-24 of a texel's value, far below 1e-4 %).
+        // result, searched for from the directions the last light chosen was measured at
+        // (view_error.h), so at least its error, up to the float rounding of the fill levels
+        // (light_candidates.h: 2^-24 of a texel's value, far below 1e-4 %).
         json = RunCli("\"" + pfm + "\" --extract-lights 3", "lights.json");
         native = ShpackNative.ConvertEquirect(sky, SkyWidth, SkyHeight, 3, new ShpackOptions { ExtractLights = 3 });
         document = ShpackDocument.LoadFile(json);
@@ -113,8 +114,8 @@ static partial class ShpackMonoTest
         ShpackViewError error = native.ViewError;
         Check(error.Directions == 512 && error.BoundPct >= 0 && error.RmsPct <= error.MaxPct, "the view error is filled in");
         if (native.Lights.Length >= 1)
-            Check(Math.Abs(error.MaxPct - native.Lights[native.Lights.Length - 1].ErrorAfterPct) < 1e-4,
-                  "the view error is the last light's error after it: " + error.MaxPct);
+            Check(error.MaxPct > native.Lights[native.Lights.Length - 1].ErrorAfterPct - 1e-4,
+                  "the view error is at least the last light's error after it: " + error.MaxPct);
     }
 
     static void CheckSameLight(ShpackLight got, ShpackLight want, string what)

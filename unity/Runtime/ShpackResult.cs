@@ -27,7 +27,8 @@ namespace Shpack
 
     // diagnostics.unity_view_error_* of the document (docs/json-format.md): the error of
     // ShadeSH9 plus every extracted light against the exact E/pi of the input, in percent of
-    // its mean E/pi, at Directions normals; each within BoundPct of the exact error.
+    // its mean E/pi, at Directions normals (RmsPct; MaxPct also searched for between them);
+    // each within BoundPct of the exact error.
     public sealed class ShpackViewError
     {
         public double MaxPct, RmsPct, BoundPct;

@@ -120,6 +120,14 @@ struct LightCandidate {
 Status find_light_candidates(const ImageView& image, const SunSearch& search, std::size_t max_candidates,
                              std::vector<LightCandidate>& candidates, const LightScale& scale = {}) noexcept;
 
+// The searches at each of `scales` (in that order) on one map, their candidates pooled into
+// `candidates` (cleared first): those of one search are disjoint, those of two may share
+// texels. What the searches share, the map's mean luminance and the first pass over its
+// tiles, is done once. Errors: those of find_light_candidates.
+Status find_light_candidates_at_scales(const ImageView& image, const SunSearch& search, std::size_t max_candidates,
+                                       std::span<const LightScale> scales,
+                                       std::vector<LightCandidate>& candidates) noexcept;
+
 // True when the two candidates share a texel (their texels are row-major, as found).
 bool share_a_texel(const LightCandidate& a, const LightCandidate& b) noexcept;
 

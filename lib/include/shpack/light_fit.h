@@ -29,7 +29,10 @@
 //    H x + u <= b + T0,  -H x + u <= T0 - b,  G x <= max(S, 0),
 // every right-hand side >= 0, so x = 0, u = 0 is a vertex to start from (lib/src/common/
 // simplex.h solves it: 3 x 512 rows, K + 1 <= 9 columns). x = 0 is feasible, so the fitted
-// error is never above the map's own (b's max) at the view directions.
+// error is never above the map's own (b's max) at the view directions. Few of the rows bind at
+// the optimum (K + 1 of them at a vertex), so it is solved on a working set of directions
+// that grows by those the last solution breaks (light_fit.cpp, fit_channel), each program a
+// few tens of rows instead of 1536.
 //
 // The directions. A source's centre (light_candidates.h: the direction of its flux vector) is
 // where a delta shows its own light best, but the lights are also what is left to show the
@@ -41,7 +44,9 @@
 // V. Torczon, "Optimization by direct search", SIAM Review 45 (2003), sec. 3] over each
 // light's two tangent directions, steps of kLightRefineStepsDeg, taking the first move that
 // lowers it, until no move at the
-// finest step does (or kLightRefineSweeps sweeps over the lights at one step). Deterministic:
+// finest step does (or kLightRefineSweeps sweeps over the lights at one step). A trial's fit
+// ends as soon as a working set's error, a lower bound of the whole's, shows it cannot lower
+// the best (most trials do not), so the same moves are taken for far less. Deterministic:
 // the same inputs give the same directions.
 //
 // The fit sees the view directions only, and the rounding of the packed floats and the
@@ -71,10 +76,17 @@ struct LightFit {
 // The map's side of every fit, made once per map: per channel, T(n_i) and S(n_i) over the
 // channel's mean (both empty for a channel whose mean is not positive: no light is fitted
 // there). It refers to `samples`, which must outlive it.
+// A problem is used by one thread at a time: each fit leaves in `binding` the directions whose
+// error rows bind at its optimum, and the next fit of the channel starts its working set from
+// them (the lights move little between fits, so the rows that bind do too), and in `last_pct`
+// its channels' errors, the order a fit that may stop early tries them in; the optimum does
+// not depend on either.
 struct LightFitProblem {
   const ViewSamples* samples = nullptr;
   std::array<double, 3> band_factors{};
   std::array<std::vector<double>, kChannelCount> truth, sh;
+  mutable std::array<std::vector<std::size_t>, kChannelCount> binding;
+  mutable std::array<double, kChannelCount> last_pct{};
 };
 
 // The problem of the map whose exact E/pi `samples` holds and whose radiance SH is `projected`
@@ -86,6 +98,13 @@ Status prepare_light_fit(const ViewSamples& samples, const ShL2& projected, cons
 // Fits the colours of lights towards `directions` (finite, non-zero, the map's frame).
 // Errors: InvalidArgument for a direction that is not finite and non-zero, OutOfMemory.
 Status fit_light_colours(const LightFitProblem& problem, std::span<const Dir3> directions, LightFit& out) noexcept;
+
+// The working set's first directions, and how far a row may be broken (in units of the
+// channel's mean: 1e-12 of it, far below what the packed floats show) and still count as kept.
+inline constexpr std::size_t kLightFitFirstRows = 16;
+inline constexpr std::size_t kLightFitRowsPerRound = 8;  // the most broken directions added per round
+inline constexpr double kLightFitRowTolerance = 1e-12;
+inline constexpr double kLightFitBindingTolerance = 1e-9;  // a row this near the optimum's bound binds
 
 inline constexpr double kLightReachDeg = 2.0;
 // Measured on the bundled maps (docs/accuracy.md): with 2 radii the worst map (courtyard)

@@ -177,14 +177,16 @@ typedef struct shpack_light {
 
 /* What Unity shows against the exact E/pi of the input, in percent of its mean E/pi
  * (docs/json-format.md, diagnostics.unity_view_error_*): the packed shader vectors plus every
- * extracted light, at `directions` spherical Fibonacci normals. */
+ * extracted light, at `directions` spherical Fibonacci normals (rms_pct), the max also searched
+ * for between them (view_error.h). */
 typedef struct shpack_view_error {
   double max_pct, rms_pct, bound_pct; /* each error is within bound_pct of the exact one */
   uint32_t directions, reserved;
 } shpack_view_error;
 
 /* A light of extract_lights, with the max error of what Unity shows with the lights chosen
- * before it and with it too (error_after_pct < error_before_pct). */
+ * before it and with it too (error_after_pct < error_before_pct), at the view directions the
+ * lights are fitted at. */
 typedef struct shpack_extracted_light {
   shpack_light light;
   double error_before_pct, error_after_pct;

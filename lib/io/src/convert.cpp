@@ -31,7 +31,7 @@ IoStatus project_streamed(MapSource& source, const ConvertOptions& options, ShL2
   if (IoStatus st = source.stream_into(projector, reference, options.threads); !st.ok()) return st;
   if (Status st = projector.finish(radiance, &stats); !st.ok()) return core_error(path, st);
   if (Status st = reference.finish(); !st.ok()) return core_error(path, st);
-  if (Status st = sample_view_reference(reference, samples, options.threads); !st.ok()) return core_error(path, st);
+  if (Status st = sample_view_reference(std::move(reference), samples, options.threads); !st.ok()) return core_error(path, st);
   return IoStatus::success();
 }
 

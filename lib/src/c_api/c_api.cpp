@@ -5,6 +5,7 @@
 #include "shpack/shpack_c.h"
 
 #include <new>
+#include <utility>
 
 #include "c_api_common.h"
 #include "shpack/pipeline.h"
@@ -130,7 +131,7 @@ int32_t shpack_projector_finish(shpack_projector* projector, shpack_result* resu
   projector->finished = true;
   shpack::ViewSamples samples;
   if (Status st = projector->reference.finish(); !st.ok()) return report(st, error);
-  if (Status st = shpack::sample_view_reference(projector->reference, samples, projector->threads); !st.ok())
+  if (Status st = shpack::sample_view_reference(std::move(projector->reference), samples, projector->threads); !st.ok())
     return report(st, error);
   shpack::Conversion conversion;
   if (Status st = shpack::finish_conversion(radiance, stats, shpack::Extraction{}, projector->finish, &samples, conversion); !st.ok())

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <new>
 #include <numbers>
 #include <optional>
@@ -89,11 +90,23 @@ void measure_removal(const EquirectTexels& texels, const SunSearch& search, cons
     for (int i = 0; i < kShCount; ++i) candidate.removed.c[c][i] = sh[c][i].value();
 }
 
+// What the searches of one map at every scale share: its texels, its mean luminance, and the
+// free texels before any is taken (each search takes from a copy). May throw std::bad_alloc.
+struct SharedSearch {
+  SharedSearch(const ImageView& image, const SunSearch& search)
+      : texels(image, search), mean(mean_luminance(texels)), fresh(texels) {}
+  SharedSearch(const SharedSearch&) = delete;
+  SharedSearch& operator=(const SharedSearch&) = delete;
+  EquirectTexels texels;
+  double mean;
+  FreeTexels fresh;  // refers to texels
+};
+
 // One search over a map (light_candidates.h); may throw std::bad_alloc.
 class CandidateSearch {
  public:
-  CandidateSearch(const ImageView& image, const SunSearch& search, const LightScale& scale)
-      : texels_(image, search), search_(search), scale_(scale), mean_(mean_luminance(texels_)), free_(texels_) {}
+  CandidateSearch(const SharedSearch& shared, const SunSearch& search, const LightScale& scale)
+      : texels_(shared.texels), search_(search), scale_(scale), mean_(shared.mean), free_(shared.fresh) {}
   CandidateSearch(const CandidateSearch&) = delete;
   CandidateSearch& operator=(const CandidateSearch&) = delete;
 
@@ -184,24 +197,35 @@ class CandidateSearch {
     return candidate;
   }
 
-  EquirectTexels texels_;
+  const EquirectTexels& texels_;
   SunSearch search_;
   LightScale scale_;
   double mean_;
-  FreeTexels free_;  // refers to texels_
+  FreeTexels free_;  // refers to texels_ too
 };
 
 }  // namespace
 
 Status find_light_candidates(const ImageView& image, const SunSearch& search, std::size_t max_candidates,
                              std::vector<LightCandidate>& candidates, const LightScale& scale) noexcept {
+  return find_light_candidates_at_scales(image, search, max_candidates, {&scale, 1}, candidates);
+}
+
+Status find_light_candidates_at_scales(const ImageView& image, const SunSearch& search, std::size_t max_candidates,
+                                       std::span<const LightScale> scales,
+                                       std::vector<LightCandidate>& candidates) noexcept {
   ImageView view = image;
   if (Status st = resolve_view(view); !st.ok()) return st;
   if (view.type != PixelType::F32)
     return Status::error(Errc::InvalidArgument, "the light search reads float texels");
   try {
     candidates.clear();
-    if (max_candidates > 0) candidates = CandidateSearch(view, search, scale).run(max_candidates);
+    if (max_candidates == 0 || scales.empty()) return Status::success();
+    const SharedSearch shared(view, search);
+    for (const LightScale& scale : scales) {
+      std::vector<LightCandidate> found = CandidateSearch(shared, search, scale).run(max_candidates);
+      candidates.insert(candidates.end(), std::make_move_iterator(found.begin()), std::make_move_iterator(found.end()));
+    }
     return Status::success();
   } catch (const std::bad_alloc&) {
     return Status::error(Errc::OutOfMemory, "cannot allocate the light search's texel marks or a region");

@@ -1,6 +1,7 @@
 // convert_map.cpp - stages 3 and 4 of the pipeline (pipeline.h) on a whole image, after stage 2
 // (extraction.cpp), and the checks that decide which stages run.
 #include <new>
+#include <utility>
 #include <vector>
 
 #include "shpack/pipeline.h"
@@ -127,7 +128,9 @@ Status finish_conversion(const ShL2& projected, const ProjectStats& stats, const
     result.light_candidates = extraction.candidates;
     if (reference != nullptr) {
       const ViewTransform transform{options.colour_matrix, options.intensity, options.rotate_deg};
-      result.view_error = unity_view_error(*reference, transform, result.sh.shader, shown);
+      ViewError error;
+      if (Status st = searched_view_error(*reference, transform, result.sh.shader, shown, error); !st.ok()) return st;
+      result.view_error = error;
     }
     out = std::move(result);
     return Status::success();
@@ -140,7 +143,7 @@ Status sample_map_reference(const MapImage& map, const ConvertOptions& options, 
   ViewReference reference;
   const ProjectOptions project{SamplingMethod::Exact, NonFinite::Zero, options.negative, 1};
   if (Status st = build_view_reference(map, project, reference); !st.ok()) return st;
-  return sample_view_reference(reference, out, options.threads);
+  return sample_view_reference(std::move(reference), out, options.threads);
 }
 
 }  // namespace shpack

@@ -1,7 +1,6 @@
 // extraction.cpp - stage 2 of the pipeline (pipeline.h): the sun (light_extraction.h) or the
 // lights (light_candidates.h, chosen by light_choice.h, fitted by light_fit.h) taken out of
 // a whole equirect map.
-#include <iterator>
 #include <utility>
 #include <new>
 #include <vector>
@@ -136,16 +135,11 @@ class ChoiceMeasure {
 
 Status extract_lights(const MapImage& map, const ConvertOptions& options, const ViewSamples& reference,
                       Extraction& out) noexcept {
-  std::vector<LightCandidate> candidates, found;
-  for (const LightScale& scale : kLightChoiceScales) {
-    if (Status st = find_light_candidates(map.image, search_of(options), kLightCandidateCount, found, scale); !st.ok())
-      return st;
-    try {
-      candidates.insert(candidates.end(), std::make_move_iterator(found.begin()), std::make_move_iterator(found.end()));
-    } catch (const std::bad_alloc&) {
-      return Status::error(Errc::OutOfMemory, "out of memory gathering the light candidates");
-    }
-  }
+  std::vector<LightCandidate> candidates;
+  if (Status st = find_light_candidates_at_scales(map.image, search_of(options), kLightCandidateCount,
+                                                  kLightChoiceScales, candidates);
+      !st.ok())
+    return st;
   ShL2 projected;
   const ProjectOptions exact{SamplingMethod::Exact, NonFinite::Zero, options.negative, options.threads};
   if (Status st = project_equirect(map.image, exact, projected); !st.ok()) return st;
