@@ -136,41 +136,40 @@ TEST(Lightmap, GltfSecondUvSetUnderAUniformSkyIsExact) {
     for (int i = 0; i < kShCount; ++i) EXPECT_NEAR(map.radiance[t].c[1][i], want.c[1][i], 1e-12) << t << " " << i;
 }
 
-TEST(Lightmap, ObjTextureCoordinatesAreTheLightmapUvs) {
-  // OBJ's only UV set, v up as Unity's; the quad's (v1 - v0) x (v2 - v0) is +Y, its front.
-  shpack_test::write_scene("quad.obj",
-                           "v -1 0 -1\nv -1 0 1\nv 1 0 1\nv 1 0 -1\nvt 0 0\nvt 0 1\nvt 1 1\nvt 1 0\n"
-                           "f 1/1 2/2 3/3 4/4\n");
-  const Lightmapped b = bake_lightmap_scene("obj_uv", R"({
+// A 2 m quad at y = 0 from OBJ `text` (its positions and UVs, its vn if any), 2 x 2 texels,
+// under a uniform sky of 0.4: every texel is the hemisphere about its shading normal.
+Lightmapped bake_obj_quad(const std::string& name, const std::string& text) {
+  shpack_test::write_scene(name + ".obj", text);
+  return bake_lightmap_scene(name, R"({
     "environment": {"type": "gradient", "zenith": 0.4, "horizon": 0.4, "ground": 0.4},
-    "geometry": [{"type": "mesh", "path": "quad.obj", "lightmap": {"resolution": [2, 2]}}],
+    "geometry": [{"type": "mesh", "path": ")" + name + R"(.obj", "lightmap": {"resolution": [2, 2]}}],
     "effects": ["environment"]})");
+}
+
+void expect_texels(const Lightmapped& b, const ShL2& want, double tolerance) {
   ASSERT_TRUE(b.status.ok()) << b.status.message;
   EXPECT_EQ(b.result.maps[0].used, 4u);
-  const ShL2 want = uniform_hemisphere(0.4, {0, 1, 0});
   for (std::size_t t = 0; t < 4; ++t)
-    for (int i = 0; i < kShCount; ++i) EXPECT_NEAR(b.result.maps[0].radiance[t].c[0][i], want.c[0][i], 1e-12);
+    for (int i = 0; i < kShCount; ++i) EXPECT_NEAR(b.result.maps[0].radiance[t].c[0][i], want.c[0][i], tolerance);
+}
+
+constexpr const char* kObjQuad = "v -1 0 -1\nv -1 0 1\nv 1 0 1\nv 1 0 -1\nvt 0 0\nvt 0 1\nvt 1 1\nvt 1 0\n";
+
+TEST(Lightmap, ObjTextureCoordinatesAreTheLightmapUvs) {
+  // OBJ's only UV set, v up as Unity's; the quad's (v1 - v0) x (v2 - v0) is +Y, its front.
+  expect_texels(bake_obj_quad("obj_uv", std::string(kObjQuad) + "f 1/1 2/2 3/3 4/4\n"),
+                uniform_hemisphere(0.4, {0, 1, 0}), 1e-12);
 }
 
 TEST(Lightmap, ObjNormalsAreTheShadingNormals) {
-  // The quad of the test above, its vn tilted 45 degrees towards +X on every corner: under a
-  // uniform sky each texel is the hemisphere about the shading normal n = (1, 1, 0)/sqrt 2,
-  // (the SH of a uniform hemisphere, as above), not about the quad's own +Y. A vn of any
-  // length is made unit (here 2 (1, 1, 0)). Shading normals are kept in float (relative
-  // rounding 2^-24 = 6e-8 per component) and the L1 coefficients are linear in n with factor
-  // pi L Y_1 = 0.61, so the values are exact to 1e-7; 1e-6 leaves room.
-  shpack_test::write_scene("quad_vn.obj",
-                           "v -1 0 -1\nv -1 0 1\nv 1 0 1\nv 1 0 -1\nvt 0 0\nvt 0 1\nvt 1 1\nvt 1 0\nvn 2 2 0\n"
-                           "f 1/1/1 2/2/1 3/3/1 4/4/1\n");
-  const Lightmapped b = bake_lightmap_scene("obj_vn", R"({
-    "environment": {"type": "gradient", "zenith": 0.4, "horizon": 0.4, "ground": 0.4},
-    "geometry": [{"type": "mesh", "path": "quad_vn.obj", "lightmap": {"resolution": [2, 2]}}],
-    "effects": ["environment"]})");
-  ASSERT_TRUE(b.status.ok()) << b.status.message;
+  // The same quad, its vn tilted 45 degrees towards +X on every corner: each texel is the
+  // hemisphere about the shading normal n = (1, 1, 0)/sqrt 2, not about the quad's own +Y. A
+  // vn of any length is made unit (here 2 (1, 1, 0)). Shading normals are kept in float
+  // (relative rounding 2^-24 = 6e-8 per component) and the L1 coefficients are linear in n
+  // with factor pi L Y_1 = 0.61, so the values are exact to 1e-7; 1e-6 leaves room.
   const double h = 1 / std::sqrt(2.0);
-  const ShL2 want = uniform_hemisphere(0.4, {h, h, 0});
-  for (std::size_t t = 0; t < 4; ++t)
-    for (int i = 0; i < kShCount; ++i) EXPECT_NEAR(b.result.maps[0].radiance[t].c[0][i], want.c[0][i], 1e-6);
+  expect_texels(bake_obj_quad("obj_vn", std::string(kObjQuad) + "vn 2 2 0\nf 1/1/1 2/2/1 3/3/1 4/4/1\n"),
+                uniform_hemisphere(0.4, {h, h, 0}), 1e-6);
 }
 
 TEST(Lightmap, GltfWithOnlyTexcoord0IsRefusedInOneLine) {
@@ -347,6 +346,18 @@ TEST(Lightmap, SameResultForAnyThreadCount) {
     EXPECT_EQ(one.result.maps[0].radiance[t], two.result.maps[0].radiance[t]) << t;
 }
 
+// The raster of one shape (labelled "geometry[0]") on a side x side map.
+bool raster_of(const scene::SceneShape& shape, std::uint32_t side, LightmapRaster& raster) {
+  scene::LightmapTarget target;
+  target.label = "geometry[0]";
+  target.width = target.height = side;
+  target.shapes = {0};
+  std::string error;
+  const bool ok = rasterize_lightmap(target, {shape}, raster, error);
+  EXPECT_TRUE(ok) << error;
+  return ok;
+}
+
 TEST(Lightmap, UnusedTexelsAreMarkedAndChartsPadded) {
   // One triangle over the lower-left half of an 8 x 8 map: texels above the diagonal are
   // unused, except those padding reaches (2 rings); none is black-and-used.
@@ -355,13 +366,8 @@ TEST(Lightmap, UnusedTexelsAreMarkedAndChartsPadded) {
   tri.vertices = {0, 0, 0, 1, 0, 0, 0, 0, 1};
   tri.indices = {0, 1, 2};
   tri.uv = {0, 0, 1, 0, 0, 1};
-  scene::LightmapTarget target;
-  target.label = "geometry[0]";
-  target.width = target.height = 8;
-  target.shapes = {0};
   LightmapRaster raster;
-  std::string error;
-  ASSERT_TRUE(rasterize_lightmap(target, {tri}, raster, error)) << error;
+  ASSERT_TRUE(raster_of(tri, 8, raster));
   double covered = 0;
   for (const float c : raster.coverage) covered += c;
   EXPECT_NEAR(covered, 32.0, 1e-5);  // half of 64 texels, exactly (clipped areas)
@@ -381,13 +387,8 @@ TEST(Lightmap, TexelWhereTwoChartsMeetHoldsOnlyTheOneCoveringMostOfIt) {
   two.vertices = {0, 0, 0, 0.6f, 0, 0, 0.6f, 0, 1, 0, 0, 1, 0.6f, 5, 0, 1, 5, 0, 1, 5, 1, 0.6f, 5, 1};
   two.indices = {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7};
   two.uv = {0, 0, 0.6f, 0, 0.6f, 1, 0, 1, 0.6f, 0, 1, 0, 1, 1, 0.6f, 1};
-  scene::LightmapTarget target;
-  target.label = "geometry[0]";
-  target.width = target.height = 1;
-  target.shapes = {0};
   LightmapRaster raster;
-  std::string error;
-  ASSERT_TRUE(rasterize_lightmap(target, {two}, raster, error)) << error;
+  ASSERT_TRUE(raster_of(two, 1, raster));
   EXPECT_NEAR(raster.coverage[0], 0.6, 1e-6);
   EXPECT_EQ(raster.shared, 1u);
   ASSERT_EQ(raster.points.size(), 2u);

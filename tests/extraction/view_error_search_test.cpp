@@ -62,19 +62,24 @@ Dir3 dense_direction(std::size_t i) {
   return {r.x, std::cos(b) * r.y - std::sin(b) * r.z, std::sin(b) * r.y + std::cos(b) * r.z};
 }
 
-class SharpSources : public testing::TestWithParam<SharpMap> {};
-
-TEST_P(SharpSources, TheReportedMaxIsNotATrainingError) {
-  const shpack_test::DiscMap map = shpack_test::draw_discs(kW, kH, GetParam().discs);
+// convert_map on a copy of the map's pixels (extraction writes into them).
+bool convert_copy(const shpack_test::DiscMap& map, const ConvertOptions& options, Conversion& out) {
   std::vector<float> pixels = map.image.rgb;
   MapImage image;
   image.image = make_view(pixels.data(), kW, kH, 3);
   image.writable = pixels.data();
+  return convert_map(image, options, out).ok();
+}
+
+class SharpSources : public testing::TestWithParam<SharpMap> {};
+
+TEST_P(SharpSources, TheReportedMaxIsNotATrainingError) {
+  const shpack_test::DiscMap map = shpack_test::draw_discs(kW, kH, GetParam().discs);
   ConvertOptions options;
   options.extract_lights = 4;
   options.finish.window.kind = WindowKind::Optimal;
   Conversion out;
-  ASSERT_TRUE(convert_map(image, options, out).ok());
+  ASSERT_TRUE(convert_copy(map, options, out));
   ASSERT_TRUE(out.view_error);
   ASSERT_GE(out.lights.size(), 2u);
   std::vector<UnitySunLight> shown;
@@ -135,15 +140,11 @@ TEST(ViewErrorSearch, DoesNotDependOnTheThreadCount) {
   const shpack_test::DiscMap map = shpack_test::draw_discs(kW, kH, kLamps.discs);
   std::vector<ViewError> errors;
   for (unsigned threads : {1u, 2u}) {
-    std::vector<float> pixels = map.image.rgb;
-    MapImage image;
-    image.image = make_view(pixels.data(), kW, kH, 3);
-    image.writable = pixels.data();
     ConvertOptions options;
     options.extract_lights = 2;
     options.threads = threads;
     Conversion out;
-    ASSERT_TRUE(convert_map(image, options, out).ok());
+    ASSERT_TRUE(convert_copy(map, options, out));
     ASSERT_TRUE(out.view_error);
     errors.push_back(*out.view_error);
   }

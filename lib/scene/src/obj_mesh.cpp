@@ -64,6 +64,14 @@ std::string number_text(double v) {
 
 constexpr std::int64_t kMaxVertices = std::numeric_limits<std::uint32_t>::max();
 
+// `token` as a finite double into v; the problem if it is not one, else empty.
+std::string finite_number(std::string_view token, double& v) {
+  const Parsed parsed = parse_number(token, v);
+  if (parsed == Parsed::NotANumber) return quoted(token) + " is not a number";
+  if (parsed == Parsed::OutOfRange || !std::isfinite(v)) return quoted(token) + " is not a finite double";
+  return {};
+}
+
 // An attribute that face references may index (texture coordinates, normals): its values,
 // each reference's index (0-based, parallel to the position references), the first line with
 // a reference without one, and the range problems of its indices, reported at the end only
@@ -175,9 +183,7 @@ bool parse_obj(std::string_view text, double max_abs, ObjMesh& out, std::string&
         std::string_view token;
         double v = 0;
         if (!tokens.next(token)) return fail("a vertex needs x, y and z");
-        const Parsed parsed = parse_number(token, v);
-        if (parsed == Parsed::NotANumber) return fail(quoted(token) + " is not a number");
-        if (parsed == Parsed::OutOfRange || !std::isfinite(v)) return fail(quoted(token) + " is not a finite double");
+        if (const std::string p = finite_number(token, v); !p.empty()) return fail(p);
         if (!(std::fabs(v) <= max_abs))
           return fail(number_text(v) + " is beyond " + number_text(max_abs) + ", the ray tracer's range");
         out.vertices.push_back(v);
@@ -192,9 +198,7 @@ bool parse_obj(std::string_view text, double max_abs, ObjMesh& out, std::string&
           texture.values.push_back(0.0);  // v is optional, 0 by default (the OBJ specification)
           break;
         }
-        const Parsed parsed = parse_number(token, v);
-        if (parsed == Parsed::NotANumber) return fail(quoted(token) + " is not a number");
-        if (parsed == Parsed::OutOfRange || !std::isfinite(v)) return fail(quoted(token) + " is not a finite double");
+        if (const std::string p = finite_number(token, v); !p.empty()) return fail(p);
         texture.values.push_back(v);
       }
     } else if (keyword == "vn" && with_uv) {
@@ -203,9 +207,7 @@ bool parse_obj(std::string_view text, double max_abs, ObjMesh& out, std::string&
         std::string_view token;
         double v = 0;
         if (!tokens.next(token)) return fail("a normal needs x, y and z");
-        const Parsed parsed = parse_number(token, v);
-        if (parsed == Parsed::NotANumber) return fail(quoted(token) + " is not a number");
-        if (parsed == Parsed::OutOfRange || !std::isfinite(v)) return fail(quoted(token) + " is not a finite double");
+        if (const std::string p = finite_number(token, v); !p.empty()) return fail(p);
         normal.values.push_back(v);
       }
     } else if (keyword == "f") {
