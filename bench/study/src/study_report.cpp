@@ -246,6 +246,12 @@ std::string json_report(const std::vector<StudyRecord>& records) {
     j["coef_err_max"] = r.accuracy.coef_err_max;
     j["min_e_over_pi"] = r.accuracy.min_e_over_pi;
     j["load_average"] = r.load_average;
+    j["expected_err_rms_pct"] = r.expected_err_rms_pct;
+    j["expected_err_max_pct"] = r.expected_err_max_pct;
+    j["error_kind"] = error_kind_name(r.err_rms_kind);
+    j["err_max_kind"] = error_kind_name(r.err_max_kind);
+    j["err_rms_pct_ci95"] = {r.err_rms_interval.low, r.err_rms_interval.high};
+    j["err_max_pct_ci95"] = {r.err_max_interval.low, r.err_max_interval.high};
     array.push_back(std::move(j));
   }
   return array.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";

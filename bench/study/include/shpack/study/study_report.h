@@ -48,8 +48,11 @@ std::string markdown_report(const std::vector<StudyRecord>& records);
 // (null for the methods that ignore it; the first of the draws' seeds), seeds (the number of
 // draws), threads, repeats, samples, time_ms_median, time_ms_min, time_ms_max, err_max_pct,
 // err_max_pct_p10, err_max_pct_p90, err_rms_pct, err_rms_pct_p10, err_rms_pct_p90,
-// coef_err_max, min_e_over_pi, load_average (1, 5, 15 minutes) (NaN is null). Ends with a
-// line break.
+// coef_err_max, min_e_over_pi, load_average (1, 5, 15 minutes), expected_err_rms_pct,
+// expected_err_max_pct, error_kind (of expected_err_rms_pct: "exact", "bound" or "sampled",
+// expected_error.h), err_max_kind (of expected_err_max_pct), err_rms_pct_ci95 and
+// err_max_pct_ci95 (the draws' 95% intervals, [low, high]) (NaN is null). Ends with a line
+// break.
 std::string json_report(const std::vector<StudyRecord>& records);
 
 }  // namespace shpack::study
