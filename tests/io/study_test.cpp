@@ -24,6 +24,7 @@
 #include "shpack/sampling_variance.h"
 #include "shpack/sampling_methods.h"
 #include "shpack/study/load_average.h"
+#include "shpack/study/pareto_front.h"
 #include "shpack/study/method_sweep.h"
 #include "shpack/study/plot.h"
 #include "shpack/study/study.h"
@@ -365,10 +366,12 @@ std::vector<StudyRecord> power_law_records() {
     mc.time_ms_median = n * 1e-4;
     mc.accuracy.err_max_pct = 300 / std::sqrt(n);
     mc.accuracy.err_rms_pct = 100 / std::sqrt(n);
+    mc.expected_err_rms_pct = 100 / std::sqrt(n);  // the fits read the expected error
     StudyRecord grid = mc;
     grid.spec = {SamplingMethod::Riemann, static_cast<std::uint32_t>(n)};
     grid.accuracy.err_max_pct = 3000 / n;
     grid.accuracy.err_rms_pct = 1000 / n;
+    grid.expected_err_rms_pct = 1000 / n;
     records.push_back(mc);
     records.push_back(grid);
   }
@@ -383,6 +386,20 @@ TEST(StudyReport, ConvergenceSlopesRecoverPowerLaws) {
   EXPECT_EQ(fits[0].points, 4);
   EXPECT_EQ(fits[1].method, SamplingMethod::Riemann);
   EXPECT_NEAR(fits[1].slope, -1.0, 1e-12);
+}
+
+// The front keeps a point only if it beats every faster one; NaN errors are left out.
+TEST(StudyReport, ParetoFrontKeepsWhatNoFasterPointBeats) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<FrontPoint> front = pareto_front({{"slow-good", 10, 0.1, "exact"},
+                                                      {"fast-bad", 1, 5, "exact"},
+                                                      {"mid-worse", 5, 6, "sampled"},
+                                                      {"mid-better", 5, 2, "exact"},
+                                                      {"black", 0.5, nan, "exact"}});
+  ASSERT_EQ(front.size(), 3u);
+  EXPECT_EQ(front[0].spec, "fast-bad");
+  EXPECT_EQ(front[1].spec, "mid-better");
+  EXPECT_EQ(front[2].spec, "slow-good");
 }
 
 TEST(StudyReport, SummaryTakesTheWorstAndTheMedianInput) {
