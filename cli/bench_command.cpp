@@ -141,6 +141,11 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& options) {
                   "with the 10th and 90th percentiles; 1 to 1000000 (default 16)")
       ->type_name("N")
       ->check(unsigned_in(1, 1000000));
+  cmd->add_option("--max-draws", options.max_draws,
+                  "qmc, which has no closed-form error: draws doubled from --seeds until its RMS error's 95% "
+                  "interval is within 10%, or this many; 1 to 1000000 (default 128)")
+      ->type_name("N")
+      ->check(unsigned_in(1, 1000000));
   cmd->add_option("--threads", options.threads,
                   "Threads for exact, center and mip; the others use one (default 1; 0: all cores)")
       ->type_name("N")
@@ -177,7 +182,8 @@ int run_bench(const BenchOptions& options) {
   if (!options.methods.empty() &&
       !study::parse_method_list(options.methods, options.quick, options.seed, specs).ok())
     return kExitUsage;  // checked by CLI11
-  const study::StudySettings settings{options.repeats, options.threads, options.seeds};
+  study::StudySettings settings{options.repeats, options.threads, options.seeds};
+  settings.max_draws = options.max_draws;
   std::vector<study::StudyRecord> records;
   bool all_ok = true;
   for (const std::string& input : inputs) {

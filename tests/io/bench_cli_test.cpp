@@ -36,6 +36,32 @@ fs::path write_tiny_map(const ScratchDir& dir) {
   return path;
 }
 
+// The draws and the kinds of the expected errors (study.h): mc and is their closed form
+// (RMS exact, max a bound), deterministic rules their one error, qmc drawn from --seeds (3)
+// until its interval is within 10% or the default cap of 128 draws.
+void check_draws_and_kinds(const nlohmann::json& r, shpack::SamplingMethod method) {
+  using shpack::SamplingMethod;
+  const bool closed_form = method == SamplingMethod::MonteCarlo || method == SamplingMethod::Importance;
+  if (method == SamplingMethod::QuasiMonteCarlo) {
+    EXPECT_GE(r["seeds"].get<unsigned>(), 3u) << r["spec"];
+    EXPECT_LE(r["seeds"].get<unsigned>(), 128u) << r["spec"];
+    const double low = r["err_rms_pct_ci95"][0], high = r["err_rms_pct_ci95"][1];
+    if (r["seeds"] != 128) {
+      EXPECT_LE(high - low, 0.2 * r["err_rms_pct"].get<double>()) << r["spec"];
+    }
+    EXPECT_EQ(r["error_kind"], "sampled");
+    EXPECT_EQ(r["expected_err_rms_pct"], r["err_rms_pct"]);
+  } else {
+    EXPECT_EQ(r["seeds"], shpack::uses_seed(method) ? 3 : 1) << r["spec"];
+    EXPECT_EQ(r["error_kind"], "exact") << r["spec"];
+    EXPECT_EQ(r["err_max_kind"], closed_form ? "bound" : "exact") << r["spec"];
+  }
+  if (closed_form) {
+    // The bound of expected_error.h, sqrt(E[max^2]) <= 3 sqrt(E[rms^2]), by construction.
+    EXPECT_EQ(r["expected_err_max_pct"].get<double>(), 3.0 * r["expected_err_rms_pct"].get<double>());
+  }
+}
+
 TEST(BenchCli, QuickJsonHasOneRecordPerRunWithTheKeys) {
   const ScratchDir dir;
   const fs::path map = write_tiny_map(dir);
@@ -50,9 +76,11 @@ TEST(BenchCli, QuickJsonHasOneRecordPerRunWithTheKeys) {
     const nlohmann::json& r = records[i];
     for (const char* key : {"input", "method", "param", "seed", "seeds", "threads", "time_ms_median", "time_ms_min",
                             "time_ms_max", "err_max_pct", "err_max_pct_p10", "err_max_pct_p90", "err_rms_pct",
-                            "err_rms_pct_p10", "err_rms_pct_p90", "coef_err_max", "min_e_over_pi", "load_average"})
+                            "err_rms_pct_p10", "err_rms_pct_p90", "coef_err_max", "min_e_over_pi", "load_average", "expected_err_rms_pct",
+                            "expected_err_max_pct", "error_kind", "err_max_kind", "err_rms_pct_ci95",
+                            "err_max_pct_ci95"})
       EXPECT_TRUE(r.contains(key)) << key << " in record " << i;
-    EXPECT_EQ(r["seeds"], shpack::uses_seed(specs[i].method) ? 3 : 1) << r["spec"];
+    check_draws_and_kinds(r, specs[i].method);
     EXPECT_LE(r["err_max_pct_p10"].get<double>(), r["err_max_pct_p90"].get<double>()) << r["spec"];
     EXPECT_EQ(r["load_average"].size(), 3u);
     EXPECT_EQ(r["input"], map.string());

@@ -20,7 +20,11 @@
 #include "shpack/sh_minimum.h"
 #include "shpack/study/accuracy.h"
 #include "shpack/study/draws.h"
+#include "shpack/study/expected_error.h"
+#include "shpack/sampling_variance.h"
+#include "shpack/sampling_methods.h"
 #include "shpack/study/load_average.h"
+#include "shpack/study/pareto_front.h"
 #include "shpack/study/method_sweep.h"
 #include "shpack/study/plot.h"
 #include "shpack/study/study.h"
@@ -249,6 +253,48 @@ TEST(StudyDraws, RmsAndQuantilesOfKnownValues) {
   EXPECT_NEAR(two.err_rms.p90, 2.8, 8 * kEps);  // h = 0.9: 1 + 0.9 (3 - 1)
 }
 
+// rms_interval: mean of v^2 +- 1.96 sd(v^2)/sqrt(n), then square roots. For v = 1, 3:
+// v^2 = 1, 9, mean 5, sd sqrt(32), half-width 1.96 sqrt(32)/sqrt(2) = 7.84.
+TEST(StudyDraws, RmsIntervalIsTheMeanSquaresNormalInterval) {
+  const Interval i = rms_interval({1, 3});
+  EXPECT_EQ(i.low, 0.0);  // 5 - 7.84 < 0, clamped
+  EXPECT_NEAR(i.high, std::sqrt(12.84), 1e-14);
+  EXPECT_NEAR(relative_half_width(i, std::sqrt(5.0)), std::sqrt(12.84) / (2 * std::sqrt(5.0)), 1e-14);
+  EXPECT_TRUE(std::isnan(rms_interval({2}).low));
+}
+
+// The closed-form expected RMS error of mc (expected_error.h) against the RMS over draws of
+// the meter's err_rms_pct on a grey map (channels equal, so the worst channel is any one):
+// E[err_rms_pct^2] is the expected mean square, up to the 1024 normals standing for the
+// sphere (a degree-4 polynomial, quadrature error well under 1%). Over M draws the mean of
+// e^2 has standard error sd(e^2)/sqrt(M), estimated from the draws: within 5 of them plus 1%.
+TEST(StudyExpectedError, ClosedFormMatchesTheDrawsOfMc) {
+  std::vector<float> pixels(64 * 32);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 64; ++x) pixels[y * 64 + x] = 0.5f + 0.02f * float(x % 7 + y);
+  pixels[10 * 64 + 20] = 40.0f;
+  const ImageView view = make_view(pixels.data(), 64, 32, 1);
+  ProjectOptions options;
+  ShL2 reference, variance;
+  ASSERT_TRUE(project_with_method(view, MethodSpec{}, options, reference).ok());
+  ASSERT_TRUE(sample_variance(view, SamplingMethod::MonteCarlo, options, variance).ok());
+  constexpr std::uint32_t kN = 256;
+  constexpr int kDraws = 600;
+  const AccuracyMeter meter(reference);
+  double sum = 0, sum_sq = 0;
+  for (int k = 0; k < kDraws; ++k) {
+    ShL2 radiance;
+    ASSERT_TRUE(project_with_method(view, {SamplingMethod::MonteCarlo, kN, 100u + k}, options, radiance).ok());
+    const double e2 = std::pow(meter.measure(radiance).err_rms_pct, 2);
+    sum += e2;
+    sum_sq += e2 * e2;
+  }
+  const double mean = sum / kDraws, sd = std::sqrt((sum_sq / kDraws - mean * mean) * kDraws / (kDraws - 1));
+  const double expected = std::pow(expected_rms_pct(variance, kN, reference), 2);
+  EXPECT_NEAR(mean, expected, 5 * sd / std::sqrt(double(kDraws)) + 0.01 * expected);
+  EXPECT_LT(5 * sd / std::sqrt(double(kDraws)), 0.25 * expected);  // a factor 4/3 off fails
+}
+
 TEST(StudyDraws, LoadAverageIsTheFirstThreeNumbers) {
   const std::array<double, 3> load = parse_load_average("0.25 1.07 11.5 1/81 5810\n");
   EXPECT_EQ(load[0], 0.25);
@@ -320,10 +366,12 @@ std::vector<StudyRecord> power_law_records() {
     mc.time_ms_median = n * 1e-4;
     mc.accuracy.err_max_pct = 300 / std::sqrt(n);
     mc.accuracy.err_rms_pct = 100 / std::sqrt(n);
+    mc.expected_err_rms_pct = 100 / std::sqrt(n);  // the fits read the expected error
     StudyRecord grid = mc;
     grid.spec = {SamplingMethod::Riemann, static_cast<std::uint32_t>(n)};
     grid.accuracy.err_max_pct = 3000 / n;
     grid.accuracy.err_rms_pct = 1000 / n;
+    grid.expected_err_rms_pct = 1000 / n;
     records.push_back(mc);
     records.push_back(grid);
   }
@@ -338,6 +386,20 @@ TEST(StudyReport, ConvergenceSlopesRecoverPowerLaws) {
   EXPECT_EQ(fits[0].points, 4);
   EXPECT_EQ(fits[1].method, SamplingMethod::Riemann);
   EXPECT_NEAR(fits[1].slope, -1.0, 1e-12);
+}
+
+// The front keeps a point only if it beats every faster one; NaN errors are left out.
+TEST(StudyReport, ParetoFrontKeepsWhatNoFasterPointBeats) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<FrontPoint> front = pareto_front({{"slow-good", 10, 0.1, "exact"},
+                                                      {"fast-bad", 1, 5, "exact"},
+                                                      {"mid-worse", 5, 6, "sampled"},
+                                                      {"mid-better", 5, 2, "exact"},
+                                                      {"black", 0.5, nan, "exact"}});
+  ASSERT_EQ(front.size(), 3u);
+  EXPECT_EQ(front[0].spec, "fast-bad");
+  EXPECT_EQ(front[1].spec, "mid-better");
+  EXPECT_EQ(front[2].spec, "slow-good");
 }
 
 TEST(StudyReport, SummaryTakesTheWorstAndTheMedianInput) {

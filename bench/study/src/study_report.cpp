@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "shpack/study/method_sweep.h"
+#include "shpack/study/pareto_front.h"
 
 namespace shpack::study {
 namespace {
@@ -115,9 +116,10 @@ void convergence_section(const std::vector<StudyRecord>& records, std::string& m
   std::map<SamplingMethod, std::map<std::string, double>> slope;  // method -> input -> slope
   for (const ConvergenceFit& fit : fits) slope[fit.method][fit.input] = fit.slope;
   md += "## Convergence\n\n";
-  md += "Slope of log(err rms) against log(samples), fitted per input over the runs with an error "
-        "above 0 (for mc, qmc and is their expected error over the draws): -0.5 is N^-1/2 (Monte "
-        "Carlo), -1 is h^2 on a 2-D grid.\n\n";
+  md += "Slope of log(expected err rms) against log(samples), fitted per input over the runs with an "
+        "error above 0 (mc and is: the closed form from their variance, exactly -0.5; qmc: the RMS over "
+        "its draws; the others: their one error): -0.5 is N^-1/2 (Monte Carlo), -1 is h^2 on a 2-D "
+        "grid.\n\n";
   md += "| method | median |";
   for (const std::string& input : inputs) md.append(" ").append(fs::path(input).stem().string()).append(" |");
   md += "\n|---|---:|";
@@ -136,22 +138,63 @@ void convergence_section(const std::vector<StudyRecord>& records, std::string& m
   md += "\n";
 }
 
+// One row per point of the front: the least expected RMS error a time budget buys.
+void front_table(const std::vector<FrontPoint>& points, std::string& md) {
+  md += "| at ms | method | expected err rms % | kind |\n|---:|---|---:|---|\n";
+  for (const FrontPoint& p : pareto_front(points))
+    md.append("| ").append(fmt(p.time_ms)).append(" | ").append(p.spec).append(" | ").append(fmt(p.err_pct))
+        .append(" | ").append(p.kind).append(" |\n");
+  md += "\n";
+}
+
+void front_section(const std::vector<StudyRecord>& records, const std::vector<std::string>& inputs,
+                   std::string& md) {
+  md += "## Pareto front\n\n";
+  md += "For each time budget, the method with the least expected RMS error of E/pi (% of its mean): "
+        "\"at T ms\" is the best that T ms buys, until the next row. Exact errors are closed forms or a "
+        "deterministic rule's one error; sampled ones are RMS over draws (qmc).\n\n";
+  if (inputs.size() > 1) {
+    md += "All inputs (median time, median expected error):\n\n";
+    std::vector<FrontPoint> points;
+    for (const SpecSummary& s : summarize(records))
+      points.push_back({spec_name(s.spec), s.time_ms, s.expected_err_rms_pct, s.err_rms_kind});
+    front_table(points, md);
+  }
+  for (const std::string& input : inputs) {
+    md.append(fs::path(input).filename().string()).append(":\n\n");
+    std::vector<FrontPoint> points;
+    for (const StudyRecord& r : records)
+      if (r.input == input)
+        points.push_back({spec_name(r.spec), r.time_ms_median, r.expected_err_rms_pct,
+                          std::string(error_kind_name(r.err_rms_kind))});
+    front_table(points, md);
+  }
+}
+
+// "[low, high]" of the draws' 95% interval of the RMS error; "-" for one draw.
+std::string fmt_interval(unsigned seeds, const Interval& i) { return fmt_spread(seeds, {i.low, i.high}); }
+
 void input_section(const std::vector<StudyRecord>& records, const std::string& input, std::string& md) {
   const StudyRecord* first = nullptr;
   for (const StudyRecord& r : records)
     if (r.input == input && first == nullptr) first = &r;
   md += "## " + input + " (" + std::to_string(first->width) + "x" + std::to_string(first->height) + ")\n\n";
   md += load_note(records, input) + " " + kDrawsNote + "\n\n";
-  md += "| method | samples | seeds | ms median | ms min | ms max | err max % | p10, p90 | err rms % | p10, p90 "
-        "| coef err max | min E/pi |\n";
-  md += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  md += "Expected errors: exact (a closed form or a deterministic rule's one error), bound (an upper "
+        "bound: 3 x the expected RMS, for the max of mc and is), sampled (RMS over draws). Beside them "
+        "the draws: their RMS, 95% interval and [p10, p90].\n\n";
+  md += "| method | samples | seeds | ms median | ms min | ms max | expected err rms % | kind | expected err max % "
+        "| kind | err max % | p10, p90 | err rms % | 95% interval | p10, p90 | coef err max | min E/pi |\n";
+  md += "|---|---:|---:|---:|---:|---:|---:|---|---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const StudyRecord& r : records) {
     if (r.input != input) continue;
     const AccuracyMetrics& a = r.accuracy;
     md += "| " + spec_name(r.spec) + " | " + fmt_count(r.samples) + " | " + std::to_string(r.seeds) + " | " +
           fmt(r.time_ms_median) + " | " + fmt(r.time_ms_min) + " | " + fmt(r.time_ms_max) + " | " +
+          fmt(r.expected_err_rms_pct) + " | " + std::string(error_kind_name(r.err_rms_kind)) + " | " +
+          fmt(r.expected_err_max_pct) + " | " + std::string(error_kind_name(r.err_max_kind)) + " | " +
           fmt(a.err_max_pct) + " | " + fmt_spread(r.seeds, r.err_max_spread) + " | " + fmt(a.err_rms_pct) + " | " +
-          fmt_spread(r.seeds, r.err_rms_spread) + " | " + fmt(a.coef_err_max) + " | " + fmt(a.min_e_over_pi) + " |\n";
+          fmt_interval(r.seeds, r.err_rms_interval) + " | " + fmt_spread(r.seeds, r.err_rms_spread) + " | " + fmt(a.coef_err_max) + " | " + fmt(a.min_e_over_pi) + " |\n";
   }
   md += "\n";
 }
@@ -169,13 +212,14 @@ std::vector<SpecSummary> summarize(const std::vector<StudyRecord>& records) {
   std::vector<SpecSummary> out;
   for (const std::string& name : order) {
     const std::vector<const StudyRecord*>& runs = by_spec[name];
-    std::vector<double> time, err_max, err_rms, coef, samples;
+    std::vector<double> time, err_max, err_rms, coef, samples, expected;
     const StudyRecord* worst = runs.front();  // the input of the largest err_max_pct
     unsigned seeds = 1;
     for (const StudyRecord* r : runs) {
       time.push_back(r->time_ms_median);
       err_max.push_back(r->accuracy.err_max_pct);
       err_rms.push_back(r->accuracy.err_rms_pct);
+      expected.push_back(r->expected_err_rms_pct);
       coef.push_back(r->accuracy.coef_err_max);
       samples.push_back(r->samples);
       seeds = std::max(seeds, r->seeds);
@@ -183,7 +227,8 @@ std::vector<SpecSummary> summarize(const std::vector<StudyRecord>& records) {
         worst = r;
     }
     out.push_back({runs.front()->spec, static_cast<int>(runs.size()), median_of(time), max_of(err_max),
-                   median_of(err_rms), max_of(coef), median_of(samples), seeds, worst->err_max_spread});
+                   median_of(err_rms), median_of(expected), std::string(error_kind_name(runs.front()->err_rms_kind)),
+                   max_of(coef), median_of(samples), seeds, worst->err_max_spread});
   }
   return out;
 }
@@ -193,8 +238,8 @@ std::vector<ConvergenceFit> convergence_fits(const std::vector<StudyRecord>& rec
   for (const std::string& input : inputs_in_order(records)) {
     std::map<SamplingMethod, std::vector<std::pair<double, double>>> points;  // log samples, log err
     for (const StudyRecord& r : records) {
-      if (r.input == input && r.accuracy.err_rms_pct > 0)
-        points[r.spec.method].emplace_back(std::log(r.samples), std::log(r.accuracy.err_rms_pct));
+      if (r.input == input && r.expected_err_rms_pct > 0)
+        points[r.spec.method].emplace_back(std::log(r.samples), std::log(r.expected_err_rms_pct));
     }
     for (const auto& [method, xy] : points) {
       if (xy.size() < 3) continue;
@@ -214,6 +259,7 @@ std::string markdown_report(const std::vector<StudyRecord>& records) {
   std::string md;
   if (inputs.size() > 1) summary_section(records, inputs.size(), md);
   convergence_section(records, md);
+  front_section(records, inputs, md);
   for (const std::string& input : inputs) input_section(records, input, md);
   return md;
 }
@@ -246,6 +292,12 @@ std::string json_report(const std::vector<StudyRecord>& records) {
     j["coef_err_max"] = r.accuracy.coef_err_max;
     j["min_e_over_pi"] = r.accuracy.min_e_over_pi;
     j["load_average"] = r.load_average;
+    j["expected_err_rms_pct"] = r.expected_err_rms_pct;
+    j["expected_err_max_pct"] = r.expected_err_max_pct;
+    j["error_kind"] = error_kind_name(r.err_rms_kind);
+    j["err_max_kind"] = error_kind_name(r.err_max_kind);
+    j["err_rms_pct_ci95"] = {r.err_rms_interval.low, r.err_rms_interval.high};
+    j["err_max_pct_ci95"] = {r.err_max_interval.low, r.err_max_interval.high};
     array.push_back(std::move(j));
   }
   return array.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";

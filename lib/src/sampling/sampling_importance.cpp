@@ -24,6 +24,7 @@
 
 #include "common/accumulate.h"
 #include "projection/equirect_weights.h"
+#include "sampling/importance_density.h"
 #include "sampling/sampling_estimator.h"
 #include "sampling/sampling_points.h"
 #include "sampling/sampling_projectors.h"
@@ -32,11 +33,6 @@ namespace shpack::detail {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// Rec. ITU-R BT.709 luminance of linear RGB.
-double luminance(const std::array<double, 3>& rgb) noexcept {
-  return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
-}
 
 // Exact solid angle of every texel of row j (equirect_weights.h: the k0 weight is the
 // integral of P_0 = 1 over one texel).

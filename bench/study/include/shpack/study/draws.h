@@ -27,12 +27,27 @@ double rms(const std::vector<double>& values);
 // type 7, R's and NumPy's default). NaN if any value is NaN or there are none.
 double quantile(std::vector<double> values, double p);
 
+// The 95% confidence interval of the RMS over draws as an estimate of sqrt(E[e^2]): the mean
+// of e^2 over n draws is asymptotically normal with standard error sd(e^2)/sqrt(n) (central
+// limit theorem; sd the sample standard deviation), so E[e^2] lies in
+// mean +- 1.96 sd / sqrt(n) and its square root in the square roots of those ends (the
+// lower clamped at 0). NaN ends for fewer than two draws or any NaN.
+struct Interval {
+  double low = 0, high = 0;
+};
+Interval rms_interval(const std::vector<double>& values);
+
+// The interval's half-width relative to the RMS: (high - low) / (2 rms); NaN as above.
+double relative_half_width(const Interval& interval, double rms_value);
+
 // What the draws' metrics come to: err_max_pct, err_rms_pct and coef_err_max are each the
 // RMS over the draws; min_e_over_pi is the lowest draw's (the worst ringing a user may get).
-// One draw (a deterministic method) is its own summary, both percentiles its value.
+// One draw (a deterministic method) is its own summary, both percentiles and both ends of
+// each interval its value.
 struct DrawSummary {
   AccuracyMetrics accuracy;
   Spread err_max, err_rms;
+  Interval err_max_interval, err_rms_interval;  // rms_interval of err_max_pct, err_rms_pct
 };
 DrawSummary summarize_draws(const std::vector<AccuracyMetrics>& draws);
 

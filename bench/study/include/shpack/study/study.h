@@ -9,6 +9,13 @@
 // have one draw. Only the projection is timed (the first draw's spec): the image is read or
 // made before, the errors measured after. The reference is exact (SamplingMethod::Exact) of
 // the same image, with the same options.
+//
+// Expected errors (expected_error.h) beside the draws: for mc and is the closed form from
+// their variance (sampling_variance.h, one pass over the texels per image and method, for
+// every N), the RMS error "exact" and the max error's bound "bound"; for a deterministic
+// rule its one error, "exact"; for qmc, which has no closed form, the RMS over draws,
+// "sampled": drawn in rounds that double the draws until the 95% interval of the RMS error
+// (draws.h) has a relative half-width <= target_half_width or max_draws are drawn.
 #pragma once
 
 #include <array>
@@ -21,6 +28,7 @@
 #include "shpack/sampling_methods.h"
 #include "shpack/study/accuracy.h"
 #include "shpack/study/draws.h"
+#include "shpack/study/expected_error.h"
 #include "shpack/study/study_inputs.h"
 
 namespace shpack::study {
@@ -28,7 +36,9 @@ namespace shpack::study {
 struct StudySettings {
   unsigned repeats = 5;  // timed runs per spec, >= 1
   unsigned threads = 1;  // ProjectOptions::threads (0 = all cores); only exact, center, mip use it
-  unsigned seeds = 16;   // draws of each random method, >= 1
+  unsigned seeds = 16;   // draws of each random method, >= 1 (qmc: the first round)
+  double target_half_width = 0.1;  // qmc: relative half-width of the RMS error's 95% interval
+  unsigned max_draws = 128;        // qmc: the cap on its draws
 };
 
 struct StudyRecord {
@@ -42,6 +52,10 @@ struct StudyRecord {
   unsigned seeds = 1;        // draws measured (StudySettings::seeds for a random method)
   AccuracyMetrics accuracy;  // over the draws as draws.h says: RMS errors, the lowest minimum
   Spread err_max_spread, err_rms_spread;  // of err_max_pct and err_rms_pct over the draws
+  Interval err_max_interval, err_rms_interval;  // 95% intervals of those RMS (draws.h)
+  // The expected errors and their kinds (above).
+  double expected_err_rms_pct = 0, expected_err_max_pct = 0;
+  ErrorKind err_rms_kind = ErrorKind::Exact, err_max_kind = ErrorKind::Exact;
   std::array<double, 3> load_average{};   // /proc/loadavg after the timing (load_average.h)
 };
 

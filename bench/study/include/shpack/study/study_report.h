@@ -15,6 +15,8 @@ struct SpecSummary {
   double time_ms = 0;       // median over the inputs of time_ms_median
   double err_max_pct = 0;   // worst input
   double err_rms_pct = 0;   // median over the inputs
+  double expected_err_rms_pct = 0;  // median over the inputs (study.h)
+  std::string err_rms_kind;         // its kind on the first input (the same on every one)
   double coef_err_max = 0;  // worst input
   double samples = 0;       // median over the inputs (they differ only for mip and exact)
   unsigned seeds = 1;       // draws per input (study.h)
@@ -26,10 +28,10 @@ struct SpecSummary {
 std::vector<SpecSummary> summarize(const std::vector<StudyRecord>& records);
 
 // The convergence rate of one method on one input: the least-squares slope of
-// log(err_rms_pct) against log(samples) over its runs with a positive error; for a random
-// method err_rms_pct is the expected error over its draws (draws.h), so the fit reads the
-// rate, not the scatter of single draws. -0.5 is Monte
-// Carlo's N^-1/2; -1 is an O(h^2) rule on a 2-D grid (samples ~ h^-2).
+// log(expected_err_rms_pct) against log(samples) over its runs with a positive error (study.h:
+// the closed form for mc and is, the RMS over draws for qmc, the one error of the others),
+// so the fit reads the rate, not the scatter of single draws. -0.5 is Monte Carlo's N^-1/2;
+// -1 is an O(h^2) rule on a 2-D grid (samples ~ h^-2).
 struct ConvergenceFit {
   std::string input;
   SamplingMethod method = SamplingMethod::Exact;
@@ -39,8 +41,9 @@ struct ConvergenceFit {
 std::vector<ConvergenceFit> convergence_fits(const std::vector<StudyRecord>& records);
 
 // Markdown: a summary over the inputs (when there are several), the convergence slopes
-// (per input and their median), then one table per input, each headed by the load average
-// while it was timed.
+// (per input and their median, of the expected errors), the Pareto front over time and
+// expected RMS error (pareto_front.h) of all inputs and of each, then one table per input,
+// each headed by the load average while it was timed.
 std::string markdown_report(const std::vector<StudyRecord>& records);
 
 // A JSON array, one object per record, with the keys input, width, height, method (the
@@ -48,8 +51,11 @@ std::string markdown_report(const std::vector<StudyRecord>& records);
 // (null for the methods that ignore it; the first of the draws' seeds), seeds (the number of
 // draws), threads, repeats, samples, time_ms_median, time_ms_min, time_ms_max, err_max_pct,
 // err_max_pct_p10, err_max_pct_p90, err_rms_pct, err_rms_pct_p10, err_rms_pct_p90,
-// coef_err_max, min_e_over_pi, load_average (1, 5, 15 minutes) (NaN is null). Ends with a
-// line break.
+// coef_err_max, min_e_over_pi, load_average (1, 5, 15 minutes), expected_err_rms_pct,
+// expected_err_max_pct, error_kind (of expected_err_rms_pct: "exact", "bound" or "sampled",
+// expected_error.h), err_max_kind (of expected_err_max_pct), err_rms_pct_ci95 and
+// err_max_pct_ci95 (the draws' 95% intervals, [low, high]) (NaN is null). Ends with a line
+// break.
 std::string json_report(const std::vector<StudyRecord>& records);
 
 }  // namespace shpack::study
