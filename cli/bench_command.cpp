@@ -143,7 +143,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& options) {
       ->check(unsigned_in(1, 1000000));
   cmd->add_option("--max-draws", options.max_draws,
                   "qmc, which has no closed-form error: draws doubled from --seeds until its RMS error's 95% "
-                  "interval is within 10%, or this many; 1 to 1000000 (default 128)")
+                  "interval is within 10%, or this many; 1 to 1000000 (default 16: the first round only)")
       ->type_name("N")
       ->check(unsigned_in(1, 1000000));
   cmd->add_option("--threads", options.threads,

@@ -25,7 +25,7 @@ struct BenchOptions {
   std::string methods;              // --methods; empty: every method's sweep
   unsigned repeats = 5;             // timed runs per method and parameter
   unsigned seeds = 16;              // draws of each random method (mc, qmc, is) per parameter
-  unsigned max_draws = 128;         // qmc: the cap on its draws (study.h)
+  unsigned max_draws = 16;         // qmc: the cap on its draws (study.h)
   unsigned scene_seeds = 4;         // bakes of a scene per sample count and estimator
   unsigned threads = 1;             // for exact, center, mip; 0: all cores
   std::uint64_t seed = kDefaultMethodSeed;

@@ -38,7 +38,7 @@ fs::path write_tiny_map(const ScratchDir& dir) {
 
 // The draws and the kinds of the expected errors (study.h): mc and is their closed form
 // (RMS exact, max a bound), deterministic rules their one error, qmc drawn from --seeds (3)
-// until its interval is within 10% or the default cap of 128 draws.
+// until its interval is within 10% or the cap of 128 draws the test asks for.
 void check_draws_and_kinds(const nlohmann::json& r, shpack::SamplingMethod method) {
   using shpack::SamplingMethod;
   const bool closed_form = method == SamplingMethod::MonteCarlo || method == SamplingMethod::Importance;
@@ -66,7 +66,7 @@ TEST(BenchCli, QuickJsonHasOneRecordPerRunWithTheKeys) {
   const ScratchDir dir;
   const fs::path map = write_tiny_map(dir);
   const CliRun run = run_shpack(dir, {"bench", map.string(), "--json", "--quick", "--repeats", "2", "--seed", "7",
-                                      "--seeds", "3"});
+                                      "--seeds", "3", "--max-draws", "128"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json records = nlohmann::json::parse(run.out, nullptr, /*allow_exceptions=*/false);
   ASSERT_TRUE(records.is_array()) << run.out;
