@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "scene/scene_files.h"
 #include "shpack/bake/bake_part.h"
+#include "shpack/io/sha256.h"
 #include "shpack/io/version.h"
 #include "shpack/scene/scene_loader.h"
 
@@ -233,6 +235,31 @@ TEST(BakePart, TruncatedOrAlteredPartFilesAreRefused) {
   nan.probe_result.radiance[0].c[1][2] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(decode_part(encode_part(nan), part, error));
   EXPECT_NE(error.find("a NaN or an infinite coefficient"), std::string::npos) << error;
+}
+
+// `bytes` (a part without its hash) sealed with its SHA-256, as encode_part does.
+std::string sealed(std::string bytes) {
+  io::Sha256 hash;
+  hash.update(std::as_bytes(std::span(bytes.data(), bytes.size())));
+  const io::Sha256Digest digest = hash.finish();
+  return bytes.append(reinterpret_cast<const char*>(digest.data()), digest.size());
+}
+
+TEST(BakePart, AHeaderCountThatIsNoWholeNumberIsRefused) {
+  // A well-sealed header whose probe range starts at 3.9e80 or -1 (found by fuzz_part: read as
+  // an unsigned count, a float beyond its range was undefined behaviour).
+  const scene::Scene scene = load("header", kScene);
+  std::string bytes = encode_part(shards(scene, 2, 2)[0]);
+  bytes.resize(bytes.size() - 32);
+  const std::size_t at = bytes.find("\"probes\":[") + 10;
+  for (const char* bad : {"3.9e80", "-1", "0.5", "\"0\""}) {
+    std::string altered = bytes;
+    altered.replace(at, 1, bad);  // the first's 0
+    BakePart part;
+    std::string error;
+    EXPECT_FALSE(decode_part(sealed(altered), part, error)) << bad;
+    EXPECT_NE(error.find("its header is not a part's"), std::string::npos) << error;
+  }
 }
 
 TEST(BakePart, ShardTextIsKOfN) {

@@ -133,12 +133,27 @@ void get_texel(Reader& r, LightmapTexelPart& out) {
 }
 
 // ---- Costs in the header: integers and doubles, both exact in JSON ----
+// A header's whole number: nlohmann's get<> of a float or a negative number into an unsigned
+// type is undefined (a float beyond its range), so the kind is checked first.
+std::uint64_t count_at(const Json& j) {
+  if (!j.is_number_unsigned()) throw std::runtime_error("not a count");
+  return j.get<std::uint64_t>();
+}
+std::uint32_t count32_at(const Json& j) {
+  const std::uint64_t v = count_at(j);
+  if (v > 0xffffffffu) throw std::runtime_error("not a 32-bit count");
+  return static_cast<std::uint32_t>(v);
+}
+double number_at(const Json& j) {
+  if (!j.is_number()) throw std::runtime_error("not a number");
+  return j.get<double>();
+}
 Json cost_json(const EffectCost& c) {
   return {c.enabled, c.time_ms, c.cpu_ms, c.rays, c.samples, c.analytic};
 }
 EffectCost cost_of(const Json& j) {
-  return {j.at(0).get<bool>(),          j.at(1).get<double>(),        j.at(2).get<double>(),
-          j.at(3).get<std::uint64_t>(), j.at(4).get<std::uint64_t>(), j.at(5).get<std::uint64_t>()};
+  return {j.at(0).get<bool>(),          number_at(j.at(1)),        number_at(j.at(2)),
+          count_at(j.at(3)), count_at(j.at(4)), count_at(j.at(5))};
 }
 Json costs_json(const std::array<EffectCost, kEffectCount>& costs, const GeometryCost& g, const EffectCost& validity) {
   Json effects = Json::array();
@@ -150,8 +165,8 @@ Json costs_json(const std::array<EffectCost, kEffectCount>& costs, const Geometr
 void costs_of(const Json& j, std::array<EffectCost, kEffectCount>& costs, GeometryCost& g, EffectCost& validity) {
   for (std::size_t e = 0; e < kEffectCount; ++e) costs[e] = cost_of(j.at("effects").at(e));
   const Json& geometry = j.at("geometry");
-  g = {geometry.at(0).get<bool>(), geometry.at(1).get<double>(), geometry.at(2).get<std::uint64_t>(),
-       geometry.at(3).get<std::uint64_t>()};
+  g = {geometry.at(0).get<bool>(), number_at(geometry.at(1)), count_at(geometry.at(2)),
+       count_at(geometry.at(3))};
   validity = cost_of(j.at("validity"));
 }
 
@@ -244,16 +259,16 @@ bool decode_part(std::string_view bytes, BakePart& out, std::string& error) {
     part.version = h.at("version").get<std::string>();
     if (!h.at("settings").is_object()) throw std::runtime_error("settings");
     part.settings = h.at("settings").dump();
-    part.shard = {h.at("shard").at(0).get<std::uint32_t>(), h.at("shard").at(1).get<std::uint32_t>()};
+    part.shard = {count32_at(h.at("shard").at(0)), count32_at(h.at("shard").at(1))};
     const Json& probes = h.at("probes");
     const Json& texels = h.at("texels");
-    part.probes = {probes.at(0).get<std::uint64_t>(), probes.at(1).get<std::uint64_t>()};
-    part.probes_total = probes.at(2).get<std::uint64_t>();
-    part.texels = {texels.at(0).get<std::uint64_t>(), texels.at(1).get<std::uint64_t>()};
-    part.texels_total = texels.at(2).get<std::uint64_t>();
+    part.probes = {count_at(probes.at(0)), count_at(probes.at(1))};
+    part.probes_total = count_at(probes.at(2));
+    part.texels = {count_at(texels.at(0)), count_at(texels.at(1))};
+    part.texels_total = count_at(texels.at(2));
     costs_of(h.at("probe_costs"), part.probe_result.costs, part.probe_result.geometry, part.probe_result.validity_cost);
     costs_of(h.at("texel_costs"), part.texel_result.costs, part.texel_result.geometry, part.texel_result.validity_cost);
-    part.texel_result.time_ms = h.at("texel_time_ms").get<double>();
+    part.texel_result.time_ms = number_at(h.at("texel_time_ms"));
   } catch (const std::exception&) {
     error = "its header is not a part's (JSON with the keys shpack bake --shard writes)";
     return false;
