@@ -146,11 +146,7 @@ CLI::App* add_bake_command(CLI::App& app, BakeCommandOptions& options) {
   cmd->add_option("--window", options.window,
                   "Deringing per probe: none, hanning:W, lanczos:W, unity, sloan or optimal (default none)")
       ->type_name("W")
-      ->check([](const std::string& text) {
-        Window window;
-        const Status st = parse_window(text, window);
-        return st.ok() ? std::string() : std::string(st.what);
-      });
+      ->check(window_text());
   cmd->add_option("--threads", options.threads, "Worker threads (default 0: all cores; at most the cores)")
       ->type_name("N")
       ->check(unsigned_integer());

@@ -232,11 +232,7 @@ CLI::App* add_convert_command(CLI::App& app, ConvertOptions& options) {
   cmd->add_option("--window", options.window,
                   "Deringing: none, hanning:W, lanczos:W, unity, sloan or optimal (default none)")
       ->type_name("W")
-      ->check([](const std::string& text) {
-        Window window;
-        const Status st = parse_window(text, window);
-        return st.ok() ? std::string() : std::string(st.what);
-      });
+      ->check(window_text());
   cmd->add_option("--max-texels", options.max_texels,
                   "Refuse a map whose header declares more than N texels (display or data window; "
                   "six faces together), before reading it; N >= 1 (default " + std::to_string(io::kDefaultMaxTexels) + ")")

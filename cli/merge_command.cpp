@@ -9,6 +9,7 @@
 #include "report.h"
 #include "shpack/bake/bake_part.h"
 #include "shpack/scene/scene_loader.h"
+#include "validators.h"
 
 namespace shpack::cli {
 namespace {
@@ -50,11 +51,7 @@ CLI::App* add_merge_command(CLI::App& app, MergeOptions& options) {
                   "As shpack bake's --format (default full)");
   cmd->add_option("--window", options.output.window, "As shpack bake's --window (default none)")
       ->type_name("W")
-      ->check([](const std::string& text) {
-        Window window;
-        const Status st = parse_window(text, window);
-        return st.ok() ? std::string() : std::string(st.what);
-      });
+      ->check(window_text());
   cmd->add_option("--lightmap-dir", options.output.lightmap_dir,
                   "Folder of the lightmaps' images and sidecars (default: the output's folder)")
       ->type_name("DIR");

@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include "shpack/window.h"
+
 namespace shpack::cli {
 namespace {
 
@@ -57,6 +59,16 @@ CLI::Validator unsigned_in(std::uint64_t lo, std::uint64_t hi) {
         const auto [stop, error] = std::from_chars(text.data(), end, value);
         if (digits && error == std::errc() && stop == end && value >= lo && value <= hi) return "";
         return "'" + text + "' is not an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
+      },
+      "");
+}
+
+CLI::Validator window_text() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        Window window;
+        const Status st = parse_window(text, window);
+        return st.ok() ? std::string() : std::string(st.what);
       },
       "");
 }

@@ -16,5 +16,7 @@ CLI::Validator non_negative_finite_number();
 CLI::Validator unsigned_integer();
 // Digits only, a value from lo to hi.
 CLI::Validator unsigned_in(std::uint64_t lo, std::uint64_t hi);
+// A deringing window's text, as shpack::parse_window reads it (--window of convert, bake, merge).
+CLI::Validator window_text();
 
 }  // namespace shpack::cli
