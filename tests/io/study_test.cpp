@@ -11,6 +11,7 @@
 #include <fstream>
 #include <limits>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -20,6 +21,7 @@
 #include "shpack/sh_minimum.h"
 #include "shpack/study/accuracy.h"
 #include "shpack/study/draws.h"
+#include "shpack/study/gnuplot.h"
 #include "shpack/study/expected_error.h"
 #include "shpack/sampling_variance.h"
 #include "shpack/sampling_methods.h"
@@ -447,48 +449,124 @@ TEST(StudyReport, PlotScriptDrawsEachMethodTheFrontAndExact) {
   const std::string gp = plot_script(records, "it's.png", "out.svg");
   EXPECT_NE(gp.find("set output 'it''s.png'"), std::string::npos) << gp;  // gnuplot's quote escape
   EXPECT_NE(gp.find("set output 'out.svg'"), std::string::npos) << gp;
-  EXPECT_NE(gp.find("title 'mc'"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("set ylabel 'expected RMS error of E/pi"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("title 'mc (closed form)'"), std::string::npos) << gp;
   EXPECT_NE(gp.find("title 'riemann'"), std::string::npos) << gp;
   EXPECT_NE(gp.find("title 'Pareto front'"), std::string::npos) << gp;
   EXPECT_NE(gp.find("'exact (error 0)'"), std::string::npos) << gp;
-  EXPECT_EQ(gp.find("filledcurves"), std::string::npos) << "one draw each: no spread to draw";
+  EXPECT_EQ(gp.find("filledcurves"), std::string::npos) << "no sampled method: no interval to draw";
+  EXPECT_EQ(gp.find("using 1:5"), std::string::npos) << "one draw each: no draws to check against";
 }
 
-TEST(StudyReport, PlotDrawsTheSpreadOfARandomMethodAsABand) {
+// The rows of the gnuplot data block NAME (between "NAME << EOD" and "EOD"), as numbers.
+std::vector<std::vector<double>> data_rows(const std::string& gp, const std::string& name) {
+  const std::string head = name + " << EOD\n";
+  std::size_t at = gp.find(head);
+  std::vector<std::vector<double>> rows;
+  if (at == std::string::npos) return rows;
+  at += head.size();
+  const std::string block = gp.substr(at, gp.find("EOD\n", at) - at);
+  std::istringstream lines(block);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream fields(line);
+    std::vector<double> row;
+    for (double v; fields >> v;) row.push_back(v);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string method_block(SamplingMethod method) { return "$m" + std::to_string(static_cast<int>(method)); }
+
+// gnuplot_number writes 9 significant digits: a value read back is within half a unit of the
+// 9th, 5e-9 relative.
+constexpr double kPrinted = 5e-9;
+
+// On a real study, mc's line is the closed form the record holds (not its draws, drawn as
+// the open points), so consecutive 4x sample counts halve it: slope -0.5 up to the printing.
+TEST(StudyReport, PlotOfMcIsItsClosedFormExpectedError) {
+  const StudyImage image = smooth_map();
+  std::vector<MethodSpec> specs;
+  for (const std::uint32_t n : {64u, 256u, 1024u}) specs.push_back({SamplingMethod::MonteCarlo, n, 1});
+  std::vector<StudyRecord> records;
+  ASSERT_TRUE(run_study(image, specs, {1, 1, 4}, records).ok());
+  const std::string gp = plot_script(records, "a.png", "a.svg");
+  const std::vector<std::vector<double>> rows = data_rows(gp, method_block(SamplingMethod::MonteCarlo));
+  ASSERT_EQ(rows.size(), records.size()) << gp;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    ASSERT_EQ(rows[k].size(), 5u) << gp;
+    ASSERT_EQ(records[k].err_rms_kind, ErrorKind::Exact);
+    EXPECT_NEAR(rows[k][1], records[k].expected_err_rms_pct, kPrinted * records[k].expected_err_rms_pct);
+    EXPECT_NEAR(rows[k][4], records[k].accuracy.err_rms_pct, kPrinted * records[k].accuracy.err_rms_pct);
+    if (k > 0) {
+      EXPECT_NEAR(rows[k - 1][1] / rows[k][1], 2.0, 2 * 2 * kPrinted);
+    }
+  }
+  EXPECT_NE(gp.find(method_block(SamplingMethod::MonteCarlo) + " using 1:5 with points"), std::string::npos) << gp;
+  EXPECT_EQ(gp.find("filledcurves"), std::string::npos) << "a closed form has no interval\n" << gp;
+}
+
+TEST(StudyReport, PlotDrawsASampledMethodDashedInItsInterval) {
   std::vector<StudyRecord> records = power_law_records();
   for (StudyRecord& r : records) {
     if (r.spec.method != SamplingMethod::MonteCarlo) continue;
+    r.spec.method = SamplingMethod::QuasiMonteCarlo;
     r.seeds = 16;
-    r.err_max_spread = {0.5 * r.accuracy.err_max_pct, 2 * r.accuracy.err_max_pct};
+    r.err_rms_kind = ErrorKind::Sampled;
+    r.err_rms_interval = {0.5 * r.expected_err_rms_pct, 2 * r.expected_err_rms_pct};
   }
   const std::string gp = plot_script(records, "a.png", "a.svg");
-  // mc:64's row: time, error, p10, p90; drawn as a band before its line, riemann without.
-  EXPECT_NE(gp.find("\n0.0064 37.5 18.75 75\n"), std::string::npos) << gp;
+  // qmc:64's row: time, expected error, its interval, the draws' RMS (here the same number).
+  EXPECT_NE(gp.find("\n0.0064 12.5 6.25 25 12.5\n"), std::string::npos) << gp;
   const std::size_t band = gp.find("using 1:3:4 with filledcurves");
   ASSERT_NE(band, std::string::npos) << gp;
-  EXPECT_LT(band, gp.find("title 'mc'")) << gp;
-  EXPECT_EQ(gp.find("using 1:3:4", band + 1), std::string::npos) << "only mc has a band\n" << gp;
+  const std::size_t line = gp.find("dt 2 lc rgb");
+  ASSERT_NE(line, std::string::npos) << gp;
+  EXPECT_LT(band, line) << "the band under the line\n" << gp;
+  EXPECT_NE(gp.find("title 'qmc (sampled)'"), std::string::npos) << gp;
+  EXPECT_EQ(gp.find("using 1:3:4", band + 1), std::string::npos) << "only qmc has a band\n" << gp;
+  EXPECT_EQ(gp.find("dt 2 lc", line + 1), std::string::npos) << "only qmc is dashed\n" << gp;
 }
 
-TEST(StudyReport, ParetoFrontKeepsOnlyWhatNoFasterSpecBeats) {
-  // (time, error): B and C lose to the faster A; D beats A; exact (time 10) ends the front.
+// Two inputs: the plot's front is the report's (median time, median expected error), not one
+// of its own: fib:64 has the least err_max but it does not count; fib:256 and fib:1024 tie in
+// median time (4) and the lower expected error (3) stays; qmc:256 loses to the faster fib:1024;
+// exact (error 0) ends the staircase at its time.
+TEST(StudyReport, PlotFrontIsTheReportsFrontOverTheInputs) {
   std::vector<StudyRecord> records;
-  const std::tuple<std::uint32_t, double, double> points[] = {{64, 1, 10}, {128, 2, 20}, {256, 3, 15}, {512, 4, 5}};
-  for (const auto& [n, time, err] : points) {
+  const auto add = [&](const char* input, MethodSpec spec, double time, double expected, ErrorKind kind) {
     StudyRecord r;
-    r.input = "a";
-    r.spec = {SamplingMethod::Fibonacci, n};
-    r.samples = n;
+    r.input = input;
+    r.spec = spec;
+    r.samples = spec.param;
     r.time_ms_median = time;
-    r.accuracy.err_max_pct = err;
+    r.expected_err_rms_pct = expected;
+    r.accuracy.err_rms_pct = expected;
+    r.accuracy.err_max_pct = spec.param == 64 ? 0.001 : 3 * expected;
+    r.err_rms_kind = kind;
     records.push_back(r);
+  };
+  for (const auto& [input, i] : {std::pair{"a", 0}, {"b", 1}}) {
+    add(input, {SamplingMethod::Fibonacci, 64}, 1 + 2 * i, 10 + 10 * i, ErrorKind::Exact);
+    add(input, {SamplingMethod::Fibonacci, 256}, 4, 4 + 2 * i, ErrorKind::Exact);
+    add(input, {SamplingMethod::Fibonacci, 1024}, 3 + 2 * i, 2 + 2 * i, ErrorKind::Exact);
+    add(input, {SamplingMethod::QuasiMonteCarlo, 256}, 6, 3.5, ErrorKind::Sampled);
+    add(input, {SamplingMethod::Exact, 0}, 10, 0, ErrorKind::Exact);
   }
-  StudyRecord exact;
-  exact.input = "a";
-  exact.time_ms_median = 10;
-  records.push_back(exact);
+  const std::vector<FrontPoint> front = expected_error_front(records);
+  ASSERT_EQ(front.size(), 3u);
+  EXPECT_EQ(front[0].spec, "fib:64");
+  EXPECT_EQ(front[1].spec, "fib:1024");
+  EXPECT_EQ(front[2].spec, "exact");
   const std::string gp = plot_script(records, "a.png", "a.svg");
-  EXPECT_NE(gp.find("$front << EOD\n1 10\n4 5\n10 5\nEOD\n"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("$front << EOD\n2 15\n4 3\n10 3\nEOD\n"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("$front << EOD\n" + gnuplot_front_rows(front) + "EOD\n"), std::string::npos) << gp;
+  const std::string md = markdown_report(records);
+  EXPECT_NE(md.find("All inputs (median time, median expected error):\n\n| at ms | method | expected err rms % | kind |\n"
+                    "|---:|---|---:|---|\n| 2 | fib:64 | 15 | exact |\n| 4 | fib:1024 | 3 | exact |\n"
+                    "| 10 | exact | 0 | exact |\n\n"),
+            std::string::npos)
+      << md;
 }
 
 }  // namespace

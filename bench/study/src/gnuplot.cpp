@@ -28,6 +28,18 @@ std::string gnuplot_number(double v) {
   return text;
 }
 
+std::string gnuplot_front_rows(const std::vector<FrontPoint>& front) {
+  std::string rows;
+  double last = 0;  // the error of the last row written
+  for (const FrontPoint& p : front) {
+    if (!(p.time_ms > 0)) continue;
+    if (p.err_pct > 0) last = p.err_pct;
+    else if (last == 0) break;  // nothing above 0 before it: no staircase
+    rows.append(gnuplot_number(p.time_ms)).append(" ").append(gnuplot_number(last)).append("\n");
+  }
+  return rows;
+}
+
 io::IoStatus run_gnuplot(const std::string& prefix,
                          const std::function<std::string(const fs::path& png, const fs::path& svg)>& script_of) {
   const fs::path png = prefix + ".png", svg = prefix + ".svg";

@@ -6,12 +6,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <thread>
 
 #include "shpack/study/method_sweep.h"
-#include "shpack/study/pareto_front.h"
 
 namespace shpack::study {
 namespace {
@@ -139,9 +139,9 @@ void convergence_section(const std::vector<StudyRecord>& records, std::string& m
 }
 
 // One row per point of the front: the least expected RMS error a time budget buys.
-void front_table(const std::vector<FrontPoint>& points, std::string& md) {
+void front_table(const std::vector<FrontPoint>& front, std::string& md) {
   md += "| at ms | method | expected err rms % | kind |\n|---:|---|---:|---|\n";
-  for (const FrontPoint& p : pareto_front(points))
+  for (const FrontPoint& p : front)
     md.append("| ").append(fmt(p.time_ms)).append(" | ").append(p.spec).append(" | ").append(fmt(p.err_pct))
         .append(" | ").append(p.kind).append(" |\n");
   md += "\n";
@@ -155,19 +155,14 @@ void front_section(const std::vector<StudyRecord>& records, const std::vector<st
         "deterministic rule's one error; sampled ones are RMS over draws (qmc).\n\n";
   if (inputs.size() > 1) {
     md += "All inputs (median time, median expected error):\n\n";
-    std::vector<FrontPoint> points;
-    for (const SpecSummary& s : summarize(records))
-      points.push_back({spec_name(s.spec), s.time_ms, s.expected_err_rms_pct, s.err_rms_kind});
-    front_table(points, md);
+    front_table(expected_error_front(records), md);
   }
   for (const std::string& input : inputs) {
     md.append(fs::path(input).filename().string()).append(":\n\n");
-    std::vector<FrontPoint> points;
-    for (const StudyRecord& r : records)
-      if (r.input == input)
-        points.push_back({spec_name(r.spec), r.time_ms_median, r.expected_err_rms_pct,
-                          std::string(error_kind_name(r.err_rms_kind))});
-    front_table(points, md);
+    std::vector<StudyRecord> of_input;
+    std::copy_if(records.begin(), records.end(), std::back_inserter(of_input),
+                 [&](const StudyRecord& r) { return r.input == input; });
+    front_table(expected_error_front(of_input), md);
   }
 }
 
@@ -212,7 +207,7 @@ std::vector<SpecSummary> summarize(const std::vector<StudyRecord>& records) {
   std::vector<SpecSummary> out;
   for (const std::string& name : order) {
     const std::vector<const StudyRecord*>& runs = by_spec[name];
-    std::vector<double> time, err_max, err_rms, coef, samples, expected;
+    std::vector<double> time, err_max, err_rms, coef, samples, expected, interval_low, interval_high;
     const StudyRecord* worst = runs.front();  // the input of the largest err_max_pct
     unsigned seeds = 1;
     for (const StudyRecord* r : runs) {
@@ -222,15 +217,25 @@ std::vector<SpecSummary> summarize(const std::vector<StudyRecord>& records) {
       expected.push_back(r->expected_err_rms_pct);
       coef.push_back(r->accuracy.coef_err_max);
       samples.push_back(r->samples);
+      interval_low.push_back(r->err_rms_interval.low);
+      interval_high.push_back(r->err_rms_interval.high);
       seeds = std::max(seeds, r->seeds);
       if (r->accuracy.err_max_pct > worst->accuracy.err_max_pct || std::isnan(worst->accuracy.err_max_pct))
         worst = r;
     }
     out.push_back({runs.front()->spec, static_cast<int>(runs.size()), median_of(time), max_of(err_max),
                    median_of(err_rms), median_of(expected), std::string(error_kind_name(runs.front()->err_rms_kind)),
-                   max_of(coef), median_of(samples), seeds, worst->err_max_spread});
+                   max_of(coef), median_of(samples), seeds, worst->err_max_spread,
+                   {median_of(interval_low), median_of(interval_high)}});
   }
   return out;
+}
+
+std::vector<FrontPoint> expected_error_front(const std::vector<StudyRecord>& records) {
+  std::vector<FrontPoint> points;
+  for (const SpecSummary& s : summarize(records))
+    points.push_back({spec_name(s.spec), s.time_ms, s.expected_err_rms_pct, s.err_rms_kind, s.samples});
+  return pareto_front(std::move(points));
 }
 
 std::vector<ConvergenceFit> convergence_fits(const std::vector<StudyRecord>& records) {

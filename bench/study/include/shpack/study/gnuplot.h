@@ -8,8 +8,10 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "shpack/io/io_status.h"
+#include "shpack/study/pareto_front.h"
 
 namespace shpack::study {
 
@@ -17,6 +19,11 @@ namespace shpack::study {
 std::string gnuplot_quoted(const std::string& text);
 // A number as gnuplot reads it back, nine significant digits.
 std::string gnuplot_number(double v);
+
+// A front's staircase as data rows "time error", for log axes: its points with both above 0;
+// when it ends at an error of 0 (exact, which a log axis cannot show), a last row of the
+// error before at that point's time, so the staircase runs on to where the error drops to 0.
+std::string gnuplot_front_rows(const std::vector<FrontPoint>& front);
 
 // Writes PREFIX.png and PREFIX.svg with the script that script(png, svg) returns.
 // Errors: NotFound when gnuplot is not installed, WriteFailed with gnuplot's first error

@@ -12,6 +12,7 @@ struct FrontPoint {
   double time_ms = 0;
   double err_pct = 0;
   std::string kind;  // of err_pct (expected_error.h)
+  double samples = 0;  // what the point spends: samples per projection, probe or texel
 };
 
 // The front, fastest first: each point has less error than every point at most as fast

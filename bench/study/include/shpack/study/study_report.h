@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "shpack/study/pareto_front.h"
 #include "shpack/study/study.h"
 
 namespace shpack::study {
@@ -21,6 +22,10 @@ struct SpecSummary {
   double samples = 0;       // median over the inputs (they differ only for mip and exact)
   unsigned seeds = 1;       // draws per input (study.h)
   Spread err_max_spread;    // the draws' spread of err_max_pct on the worst input
+  // The median over the inputs of each end of the draws' 95% interval of err_rms_pct: for a
+  // sampled expected error (qmc) it brackets the median expected error whenever every input's
+  // interval holds that input's (the median is monotone in each value).
+  Interval err_rms_interval;
 };
 
 // In the order the specs first appear in `records`. NaN errors (black maps) are left out
@@ -39,6 +44,11 @@ struct ConvergenceFit {
   int points = 0;  // >= 3: fewer runs give no fit
 };
 std::vector<ConvergenceFit> convergence_fits(const std::vector<StudyRecord>& records);
+
+// The Pareto front (pareto_front.h) over summarize's time and expected RMS error: of every
+// input's median when `records` hold several, of the one input's records otherwise. The
+// report's front and the plot's.
+std::vector<FrontPoint> expected_error_front(const std::vector<StudyRecord>& records);
 
 // Markdown: a summary over the inputs (when there are several), the convergence slopes
 // (per input and their median, of the expected errors), the Pareto front over time and
