@@ -29,6 +29,7 @@
 #include "shpack/study/pareto_front.h"
 #include "shpack/study/method_sweep.h"
 #include "shpack/study/plot.h"
+#include "shpack/study/scene_study.h"
 #include "shpack/study/study.h"
 #include "shpack/study/study_inputs.h"
 #include "shpack/study/study_report.h"
@@ -567,6 +568,83 @@ TEST(StudyReport, PlotFrontIsTheReportsFrontOverTheInputs) {
                     "| 10 | exact | 0 | exact |\n\n"),
             std::string::npos)
       << md;
+}
+
+// One scene panel by hand: (estimator, samples, CPU ms, error %, estimate %).
+std::vector<SceneStudyRecord> scene_records() {
+  std::vector<SceneStudyRecord> records;
+  const std::tuple<const char*, double, double, double, double> rows[] = {
+      {"next-events", 64, 2, 30, 40},  {"next-events", 256, 4, 10, 20}, {"directions", 64, 1.5, 35, 50},
+      {"directions", 256, 4, 12, 20},  {"directions", 1024, 5, 11, 15}, {"settings", 3000, 8, 1, 2}};
+  for (const auto& [estimator, samples, cpu, err, estimate] : rows) {
+    SceneStudyRecord r;
+    r.scene = "outdoor.json";
+    r.receivers = "probes";
+    r.count = 9;
+    r.effect = "bounce";
+    r.estimator = estimator;
+    r.samples = samples;
+    r.seeds = 4;
+    r.cpu_ms = cpu;
+    r.err_max_pct = err;
+    r.err_worst_pct = 1.2 * err;
+    r.estimate_pct = estimate;
+    records.push_back(r);
+  }
+  SceneStudyRecord exact = records.front();  // an effect exact at every probe: error and estimate 0
+  exact.effect = "shadows";
+  exact.err_max_pct = exact.err_worst_pct = exact.estimate_pct = 0;
+  records.push_back(exact);
+  return records;
+}
+
+// The front: directions:64 (fastest), next-events:64, next-events:256 (ties directions:256
+// in time with less error), settings; directions:1024 loses to the faster next-events:256.
+TEST(SceneStudyReport, FrontRowsAreTheParetoOptimalRecords) {
+  const std::string md = scene_markdown_report(scene_records());
+  EXPECT_NE(md.find("| error estimate % | measured / estimate | reference's estimate % |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| outdoor.json | 9 probes | bounce | settings | 3000 | 8 | 1 | 1.2 | 2 | 0.5 | 0 | 4 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("outdoor.json, probes: bounce\n\n"
+                    "| at CPU ms | estimator | samples/receiver | error % | kind | seeds | measured / estimate |\n"
+                    "|---:|---|---:|---:|---|---:|---:|\n"
+                    "| 1.5 | directions | 64 | 35 | sampled | 4 | 0.7 |\n"
+                    "| 2 | next-events | 64 | 30 | sampled | 4 | 0.75 |\n"
+                    "| 4 | next-events | 256 | 10 | sampled | 4 | 0.5 |\n"
+                    "| 8 | settings | 3000 | 1 | sampled | 4 | 0.5 |\n\n"),
+            std::string::npos)
+      << md;
+  // The exact effect: its fastest record alone, with no estimate to compare.
+  EXPECT_NE(md.find("outdoor.json, probes: shadows\n\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("|\n| 2 | next-events | 64 | 0 | sampled | 4 | n/a |\n\n"), std::string::npos) << md;
+}
+
+TEST(SceneStudyReport, JsonMarksTheFrontAndKeepsEveryKey) {
+  const std::vector<SceneStudyRecord> records = scene_records();
+  const nlohmann::json j = nlohmann::json::parse(scene_json_report(records));
+  ASSERT_EQ(j.size(), records.size());
+  const bool want_front[] = {true, true, true, false, false, true, true};
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    for (const char* key : {"scene", "receivers", "count", "effect", "estimator", "samples", "seeds", "cpu_ms",
+                            "err_max_pct", "err_worst_pct", "error_estimate_pct", "reference_estimate_pct",
+                            "receivers_per_s", "measured_over_estimate", "error_kind", "on_front"})
+      EXPECT_TRUE(j[k].contains(key)) << k << " " << key;
+    EXPECT_EQ(j[k]["on_front"], want_front[k]) << k;
+    EXPECT_EQ(j[k]["error_kind"], "sampled");
+  }
+  EXPECT_DOUBLE_EQ(j[2]["measured_over_estimate"].get<double>(), 35.0 / 50.0);
+  EXPECT_TRUE(j[6]["measured_over_estimate"].is_null()) << "no estimate to compare";
+}
+
+// Each panel draws its front first, the same points as the report's rows; the exact effect
+// (error 0 on a log axis) has no panel.
+TEST(SceneStudyReport, PlotDrawsEachPanelsFront) {
+  const std::string gp = scene_plot_script(scene_records(), "a.png", "a.svg");
+  const std::size_t plot = gp.find("plot '-' with steps lw 8 lc rgb '#c8c8c8' title 'Pareto front', ");
+  ASSERT_NE(plot, std::string::npos) << gp;
+  EXPECT_NE(gp.find("\n1.5 35\n2 30\n4 10\n8 1\ne\n", plot), std::string::npos) << gp;
+  EXPECT_EQ(gp.find("shadows"), std::string::npos) << gp;
 }
 
 }  // namespace

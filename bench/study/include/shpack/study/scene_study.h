@@ -61,10 +61,22 @@ io::IoStatus run_scene_study(const std::filesystem::path& scene_file, const Scen
                              std::vector<SceneStudyRecord>& records,
                              const std::function<void(const SceneStudyRecord&)>& progress);
 
+// Each (scene, receivers, effect) has a Pareto front (pareto_front.h) over cpu_ms and
+// err_max_pct: for a CPU-time budget, the estimator and samples with the least error. Its
+// errors are sampled (RMS over `seeds` bakes). Beside each record, measured / estimate is
+// err_max_pct / estimate_pct: how the bake's own estimate compares with what was measured.
+
+// Markdown: one table of every record, then one table per front.
 std::string scene_markdown_report(const std::vector<SceneStudyRecord>& records);
+// A JSON array, one object per record, with the keys scene, receivers, count, effect,
+// estimator, samples, seeds, cpu_ms, err_max_pct, err_worst_pct, error_estimate_pct
+// (estimate_pct), reference_estimate_pct, receivers_per_s, measured_over_estimate (null
+// without an estimate), error_kind ("sampled") and on_front (whether the record is a point
+// of its front). Ends with a line break.
 std::string scene_json_report(const std::vector<SceneStudyRecord>& records);
-// The gnuplot commands that draw error against time, one panel per effect, one line per
-// estimator, into `png` and then `svg` (write_gnuplot in plot.h runs them).
+// The gnuplot commands that draw error against time, one panel per effect with its front
+// behind one line per estimator, into `png` and then `svg` (run_gnuplot in gnuplot.h runs
+// them).
 std::string scene_plot_script(const std::vector<SceneStudyRecord>& records, const std::filesystem::path& png,
                               const std::filesystem::path& svg);
 
