@@ -4,7 +4,10 @@
 #   between "bench:begin" and "bench:end"                      the bundled maps, and the plot;
 #   between "bench-synthetic:begin" and "bench-synthetic:end"  the synthetic maps;
 #   between "view-error:begin" and "view-error:end"            `bench --view-error` of the
-#                                                              bundled maps, and its plot.
+#                                                              bundled maps, and its plot;
+#   between "bench-scenes:begin" and "bench-scenes:end"        `bench` of the scenes outdoor,
+#                                                              room_bounce1 and room_bounce3 (under
+#                                                              a minute on 2 cores), and its plot.
 # The prose around the markers is kept.
 #
 #   scripts/accuracy-doc.sh [BUILD_DIR]      default: build (Release, as quickstart.sh makes it)
@@ -24,6 +27,8 @@ mkdir -p "$repo/docs/img"
 # the first round, for speed).
 (cd "$repo" && "$shpack" bench data/hdri/*.exr --max-draws 128 --plot docs/img/accuracy) >"$work/bundled.md"
 (cd "$repo" && "$shpack" bench --view-error data/hdri/*.exr --plot docs/img/view-error) >"$work/view-error.md"
+(cd "$repo" && "$shpack" bench bench/scenes/outdoor.json bench/scenes/room_bounce1.json bench/scenes/room_bounce3.json \
+  --plot docs/img/bake-accuracy) >"$work/scenes.md"
 "$shpack" bench synthetic:band-limited synthetic:gradient synthetic:sun synthetic:texel --max-draws 128 >"$work/synthetic.md"
 
 # Replaces the lines between "<!-- NAME:begin" and "<!-- NAME:end" of $work/doc.md by FILE.
@@ -42,5 +47,6 @@ cp "$doc" "$work/doc.md"
 splice bench "$work/bundled.md"
 splice bench-synthetic "$work/synthetic.md"
 splice view-error "$work/view-error.md"
+splice bench-scenes "$work/scenes.md"
 cp "$work/doc.md" "$doc"
-echo "accuracy-doc: updated $doc and docs/img/{accuracy,view-error}.{png,svg}" >&2
+echo "accuracy-doc: updated $doc and docs/img/{accuracy,view-error,bake-accuracy}.{png,svg}" >&2
