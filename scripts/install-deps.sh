@@ -6,6 +6,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ make                 # the toolchain
+  ninja-build                    # scripts/test.sh's builds
   libopenimageio-dev             # image reading (lib/io)
   openimageio-tools              # iinfo, oiiotool: look at and make test images
   libopenexr-dev                 # OpenEXR, which OpenImageIO reads .exr with

@@ -16,6 +16,15 @@ step() {
 }
 
 step ./scripts/install-deps.sh
+# Ninja: it compiles a target's objects while the libraries it links are still being built,
+# which Make's per-target recursion does not. A build directory that an earlier run made with
+# another generator is made anew.
+export CMAKE_GENERATOR=Ninja
+for dir in build-asan build-fuzz build-large; do
+  if [[ -f $dir/CMakeCache.txt ]] && ! grep -q '^CMAKE_GENERATOR:INTERNAL=Ninja$' "$dir/CMakeCache.txt"; then
+    rm -rf "$dir"
+  fi
+done
 # -g1: line tables for the sanitizers' reports, without the full debug info that makes the
 # build and link slower (CI should stay under 15 minutes on two cores).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \

@@ -568,6 +568,9 @@ TEST(StudyReport, PlotFrontIsTheReportsFrontOverTheInputs) {
                     "| 10 | exact | 0 | exact |\n\n"),
             std::string::npos)
       << md;
+  // The summary's row of qmc:256: the median expected error (3.5 on both) and its kind, then
+  // the draws' worst max (3 x 3.5) and median RMS.
+  EXPECT_NE(md.find("| qmc:256 | 256 | 1 | 6 | 3.5 | sampled | 10.5 | - | 3.5 |"), std::string::npos) << md;
 }
 
 // One scene panel by hand: (estimator, samples, CPU ms, error %, estimate %).

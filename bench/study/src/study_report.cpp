@@ -88,22 +88,25 @@ std::string fmt_spread(unsigned seeds, const Spread& s) {
 }
 
 constexpr const char* kDrawsNote =
-    "Random methods (mc, qmc, is): each error is the RMS over `seeds` draws (the expected error), "
-    "[p10, p90] the 10th and 90th percentiles of the draws.";
+    "Random methods (mc, qmc, is): the draws' errors are RMS over `seeds` draws, [p10, p90] the 10th "
+    "and 90th percentiles of the draws; the expected error is not drawn for mc and is (their closed form).";
 
 void summary_section(const std::vector<StudyRecord>& records, std::size_t input_count, std::string& md) {
   md += "## All " + std::to_string(input_count) + " inputs\n\n";
-  md += "Time: median over the inputs. Errors of E/pi in % of its mean: worst input (max, with the "
+  md += "Time: median over the inputs. Expected RMS error of E/pi in % of its mean (its kind: exact "
+        "or sampled, expected_error.h): median input. Errors of the draws: worst input (max, with the "
         "spread of its draws), median input (rms). Coefficient error: worst input, relative to L00. ";
   md += kDrawsNote;
   md += " ";
   md += load_note(records, "");
-  md += "\n\n| method | samples | seeds | time ms | err max % | p10, p90 | err rms % | coef err max |\n";
-  md += "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  md += "\n\n| method | samples | seeds | time ms | expected err rms % | kind | err max % | p10, p90 | err rms % "
+        "| coef err max |\n";
+  md += "|---|---:|---:|---:|---:|---|---:|---:|---:|---:|\n";
   for (const SpecSummary& s : summarize(records)) {
     md += "| " + spec_name(s.spec) + " | " + fmt_count(s.samples) + " | " + std::to_string(s.seeds) + " | " +
-          fmt(s.time_ms) + " | " + fmt(s.err_max_pct) + " | " + fmt_spread(s.seeds, s.err_max_spread) + " | " +
-          fmt(s.err_rms_pct) + " | " + fmt(s.coef_err_max) + " |\n";
+          fmt(s.time_ms) + " | " + fmt(s.expected_err_rms_pct) + " | " + s.err_rms_kind + " | " + fmt(s.err_max_pct) +
+          " | " + fmt_spread(s.seeds, s.err_max_spread) + " | " + fmt(s.err_rms_pct) + " | " + fmt(s.coef_err_max) +
+          " |\n";
   }
   md += "\n";
 }

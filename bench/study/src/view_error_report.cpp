@@ -77,9 +77,10 @@ std::string view_error_markdown(const std::vector<ViewErrorRecord>& records) {
   const Grid g = grid_of(records);
   std::ostringstream md;
   md << "Max |error| of what Unity shows (ShadeSH9 + extracted lights) against the exact E/pi, % of the mean "
-        "E/pi, worst channel, at 512 directions; [n]: lights taken out\n\n";
+        "E/pi, worst channel: the max at 512 directions, at 1024 others when lights are shown, and "
+        "searched for between them (view_error.h); [n]: lights taken out\n\n";
   table(md, g, "max %", [](const ViewErrorRecord& r) { return r.error.max_pct; });
-  md << "\nRMS error, % of the mean E/pi, worst channel\n\n";
+  md << "\nRMS error, % of the mean E/pi, worst channel, over the 512 directions\n\n";
   table(md, g, "rms %", [](const ViewErrorRecord& r) { return r.error.rms_pct; });
   md << "\nEach error is within the bound of the error against the exact E/pi (largest bound: ";
   double bound = 0;
