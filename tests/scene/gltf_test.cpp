@@ -236,7 +236,20 @@ TEST(Gltf, OtherRequiredExtensionsAreRefusedByName) {
   const std::string e = error_of("draco.gltf", document(data_uri_buffer(bytes_of(kTriangle)), R"({"buffer": 0, "byteLength": 36})",
                                                         float_accessor(3), R"({"attributes": {"POSITION": 0}})",
                                                         R"(, "extensionsRequired": ["KHR_mesh_quantization", "KHR_draco_mesh_compression"])"));
-  EXPECT_HAS(e, "extensionsRequired[1]: KHR_draco_mesh_compression is not supported");
+  EXPECT_HAS(e, "extensionsRequired[1]: 'KHR_draco_mesh_compression' is not supported");
+}
+
+// Strings from the file reach the message quoted, their control characters as \xNN and cut
+// to 64 bytes: a version, an extension's name or a URI with a line break once made a
+// two-line message (found by fuzz_gltf).
+TEST(Gltf, StringsFromTheFileAreQuotedOnOneLine) {
+  EXPECT_HAS(error_of("version.gltf", R"({"asset": {"version": "1\nshpack: fake"}})"),
+             "asset.version: '1\\x0ashpack: fake': only glTF 2.x is read");
+  const std::string long_name(100, 'x');
+  EXPECT_HAS(error_of("ext.gltf", R"({"asset": {"version": "2.0"}, "extensionsRequired": ["a\u001b[31m)" + long_name + R"("]})"),
+             "extensionsRequired[0]: 'a\\x1b[31m" + long_name.substr(0, 58) + "...' is not supported");
+  EXPECT_HAS(error_of("uri.gltf", document(R"({"byteLength": 36, "uri": "/x\r.bin"})", R"({"buffer": 0, "byteLength": 36})", float_accessor(3))),
+             "buffers[0].uri: '/x\\x0d.bin': absolute paths are refused");
 }
 
 // ---- 3. sparse accessors ----
@@ -475,7 +488,7 @@ TEST(GltfUv, NormalizedUnsignedTexcoordsAreDividedByTheirMaximum) {
              "accessors[1]: TEXCOORD_1 of UNSIGNED_INT is not allowed");
   EXPECT_HAS(error_of_uv("uvvec3.gltf", attribute_document(bytes_of(kTriangle), R"({"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"})",
                                                            prim)),
-             "accessors[1]: TEXCOORD_1 must be VEC2, not VEC3");
+             "accessors[1]: TEXCOORD_1 must be VEC2, not 'VEC3'");
 }
 
 TEST(GltfUv, SparseTexcoord1SubstitutesItsValues) {

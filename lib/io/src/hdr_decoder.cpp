@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rgbe_scanline.h"
+#include "shpack/io/quoted.h"
 
 namespace shpack::io::detail {
 namespace {
@@ -38,15 +39,6 @@ std::string_view trim(std::string_view s) {
   while (!s.empty() && blank(s.front())) s.remove_prefix(1);
   while (!s.empty() && blank(s.back())) s.remove_suffix(1);
   return s;
-}
-
-// A quotable piece of a header line, for messages (IoStatus escapes control characters).
-std::string quoted(std::string_view line) {
-  std::string q = "'";
-  q += line.substr(0, 64);
-  if (line.size() > 64) q += "...";
-  q += "'";
-  return q;
 }
 
 // Splits `line` at blanks.

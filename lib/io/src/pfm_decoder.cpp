@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "shpack/io/quoted.h"
+
 namespace shpack::io::detail {
 namespace {
 
@@ -49,14 +51,6 @@ bool parse_scale(std::string_view word, float& out) {
   return ec == std::errc() && end == word.data() + word.size() && std::isfinite(out) && out != 0.0f;
 }
 
-std::string quoted(std::string_view word) {
-  std::string q = "'";
-  q += word.substr(0, 32);
-  if (word.size() > 32) q += "...";
-  q += "'";
-  return q;
-}
-
 // Reads the header from the file's first bytes `head`.
 IoStatus parse_header(const std::filesystem::path& path, std::string_view head, std::uint64_t file_size, Header& out) {
   const auto unreadable = [&](const std::string& problem) {
@@ -80,7 +74,7 @@ IoStatus parse_header(const std::filesystem::path& path, std::string_view head, 
       std::string problem = "the PFM header's ";
       problem += names[k];
       problem += " ";
-      problem += quoted(word);
+      problem += quoted(word, 32);
       problem += k < 2 ? " is not a whole number from 1 to 2147483647"
                        : " is not a finite number other than 0 (its sign gives the byte order)";
       return unreadable(problem);

@@ -20,6 +20,7 @@
 
 #include "checked_math.h"
 #include "shpack/io/file_checks.h"
+#include "shpack/io/quoted.h"
 
 namespace shpack::scene::detail {
 namespace {
@@ -172,7 +173,7 @@ fs::path resolve_uri(const std::string& uri, const fs::path& folder, const std::
                                  uri[scheme] == '-' || uri[scheme] == '.'))
     ++scheme;
   if (scheme > 0 && scheme < uri.size() && uri[scheme] == ':' && std::isalpha(static_cast<unsigned char>(uri[0])))
-    fail(path, "'" + uri + "': absolute URIs are refused (only files beside the glTF file)");
+    fail(path, io::quoted(uri) + ": absolute URIs are refused (only files beside the glTF file)");
   std::string decoded;
   for (std::size_t k = 0; k < uri.size(); ++k) {
     if (uri[k] != '%') {
@@ -180,26 +181,26 @@ fs::path resolve_uri(const std::string& uri, const fs::path& folder, const std::
       continue;
     }
     const int hi = k + 2 < uri.size() ? hex_digit(uri[k + 1]) : -1, lo = k + 2 < uri.size() ? hex_digit(uri[k + 2]) : -1;
-    if (hi < 0 || lo < 0) fail(path, "'" + uri + "': a bad percent escape");
+    if (hi < 0 || lo < 0) fail(path, io::quoted(uri) + ": a bad percent escape");
     decoded += static_cast<char>(hi * 16 + lo);
     k += 2;
   }
-  if (decoded.find('\0') != std::string::npos) fail(path, "'" + uri + "': a NUL byte");
-  if (!decoded.empty() && decoded[0] == '/') fail(path, "'" + uri + "': absolute paths are refused (only files beside the glTF file)");
+  if (decoded.find('\0') != std::string::npos) fail(path, io::quoted(uri) + ": a NUL byte");
+  if (!decoded.empty() && decoded[0] == '/') fail(path, io::quoted(uri) + ": absolute paths are refused (only files beside the glTF file)");
   std::vector<std::string> parts;
   std::size_t start = 0;
   while (start <= decoded.size()) {
     const std::size_t end = std::min(decoded.find('/', start), decoded.size());
     const std::string part = decoded.substr(start, end - start);
     if (part == "..") {
-      if (parts.empty()) fail(path, "'" + uri + "': leaves the glTF file's folder");
+      if (parts.empty()) fail(path, io::quoted(uri) + ": leaves the glTF file's folder");
       parts.pop_back();
     } else if (!part.empty() && part != ".") {
       parts.push_back(part);
     }
     start = end + 1;
   }
-  if (parts.empty()) fail(path, "'" + uri + "': names no file");
+  if (parts.empty()) fail(path, io::quoted(uri) + ": names no file");
   fs::path out = folder;
   for (const std::string& part : parts) out /= part;
   return out;
@@ -510,7 +511,7 @@ class Reader {
     const Json& asset = required(doc_, "asset", "");
     object_at(asset, "asset");
     const std::string version = string_of(required(asset, "version", "asset"), "asset.version");
-    if (version.rfind("2.", 0) != 0) fail("asset.version", "'" + version + "': only glTF 2.x is read");
+    if (version.rfind("2.", 0) != 0) fail("asset.version", io::quoted(version) + ": only glTF 2.x is read");
     const auto names = [&](const char* key) {
       std::vector<std::string> out;
       if (const Json* list = find(doc_, key)) {
@@ -522,7 +523,7 @@ class Reader {
     const std::vector<std::string> used = names("extensionsUsed"), required_ext = names("extensionsRequired");
     for (std::size_t k = 0; k < required_ext.size(); ++k)
       if (required_ext[k] != "KHR_mesh_quantization" && required_ext[k] != "KHR_materials_emissive_strength")
-        fail(index_path("extensionsRequired", k), required_ext[k] +
+        fail(index_path("extensionsRequired", k), io::quoted(required_ext[k]) +
                  " is not supported (supported: KHR_mesh_quantization, KHR_materials_emissive_strength)");
     for (const auto* list : {&used, &required_ext})
       if (std::find(list->begin(), list->end(), "KHR_mesh_quantization") != list->end()) quantization_ = true;
@@ -679,7 +680,7 @@ class Reader {
     const Json& m = element("materials", index, path);
     GltfMaterial out;
     out.label = path;
-    if (const Json* name = find(m, "name")) out.label += " '" + string_of(*name, member_path(path, "name")) + "'";
+    if (const Json* name = find(m, "name")) out.label += " " + io::quoted(string_of(*name, member_path(path, "name")));
     out.albedo = {1, 1, 1};
     if (const Json* pbr = find(m, "pbrMetallicRoughness")) {
       const std::string ppath = member_path(path, "pbrMetallicRoughness");
@@ -806,7 +807,7 @@ class Reader {
                      " needs the extension KHR_mesh_quantization");
     };
     if (role == Role::Position) {
-      if (shape != "VEC3") fail(path, "POSITION must be VEC3, not " + shape);
+      if (shape != "VEC3") fail(path, "POSITION must be VEC3, not " + io::quoted(shape));
       if (L.type == kUnsignedInt || (L.type == kFloat && L.normalized))
         fail(path, std::string("POSITION of ") + (L.normalized ? "normalized " : "") + component_name(L.type) + " is not allowed");
       if (L.type != kFloat && !quantization_)
@@ -815,20 +816,20 @@ class Reader {
     } else if (role == Role::Texcoord) {
       // glTF 2.0, 3.7.2.1: float, or normalized UNSIGNED_BYTE / UNSIGNED_SHORT;
       // KHR_mesh_quantization adds (un)normalized BYTE / SHORT and unnormalized unsigned ones.
-      if (shape != "VEC2") fail(path, "TEXCOORD_1 must be VEC2, not " + shape);
+      if (shape != "VEC2") fail(path, "TEXCOORD_1 must be VEC2, not " + io::quoted(shape));
       if (L.type == kUnsignedInt || (L.type == kFloat && L.normalized)) refuse("TEXCOORD_1");
       const bool core = L.type == kFloat || ((L.type == kUnsignedByte || L.type == kUnsignedShort) && L.normalized);
       if (!core && !quantization_) needs_quantization("TEXCOORD_1");
       L.components = 2;
     } else if (role == Role::Normal) {
       // Float; KHR_mesh_quantization adds normalized BYTE / SHORT.
-      if (shape != "VEC3") fail(path, "NORMAL must be VEC3, not " + shape);
+      if (shape != "VEC3") fail(path, "NORMAL must be VEC3, not " + io::quoted(shape));
       const bool quantized = (L.type == kByte || L.type == kShort) && L.normalized;
       if (!(L.type == kFloat && !L.normalized) && !quantized) refuse("NORMAL");
       if (quantized && !quantization_) needs_quantization("NORMAL");
       L.components = 3;
     } else {
-      if (shape != "SCALAR") fail(path, "indices must be SCALAR, not " + shape);
+      if (shape != "SCALAR") fail(path, "indices must be SCALAR, not " + io::quoted(shape));
       if (L.type != kUnsignedByte && L.type != kUnsignedShort && L.type != kUnsignedInt)
         fail(path, std::string("indices must be unsigned integers, not ") + component_name(L.type));
       if (L.normalized) fail(member_path(path, "normalized"), "indices cannot be normalized");

@@ -10,6 +10,8 @@
 #include <unordered_map>
 #include <utility>
 
+#include "shpack/io/quoted.h"
+
 namespace shpack::scene::detail {
 namespace {
 
@@ -47,15 +49,6 @@ Parsed parse_number(std::string_view token, T& v) {
   return ec == std::errc() ? Parsed::Ok : Parsed::NotANumber;
 }
 
-std::string quoted(std::string_view token) {
-  constexpr std::size_t kShown = 32;  // a hostile token may be megabytes long
-  // Appended piece by piece: g++ 12 at -O3 reports a false -Wrestrict on "'" + string.
-  std::string out(1, '\'');
-  out.append(token.substr(0, kShown));
-  out += token.size() > kShown ? "...'" : "'";
-  return out;
-}
-
 std::string number_text(double v) {
   std::ostringstream os;
   os << v;
@@ -67,8 +60,8 @@ constexpr std::int64_t kMaxVertices = std::numeric_limits<std::uint32_t>::max();
 // `token` as a finite double into v; the problem if it is not one, else empty.
 std::string finite_number(std::string_view token, double& v) {
   const Parsed parsed = parse_number(token, v);
-  if (parsed == Parsed::NotANumber) return quoted(token) + " is not a number";
-  if (parsed == Parsed::OutOfRange || !std::isfinite(v)) return quoted(token) + " is not a finite double";
+  if (parsed == Parsed::NotANumber) return io::quoted(token, 32) + " is not a number";
+  if (parsed == Parsed::OutOfRange || !std::isfinite(v)) return io::quoted(token, 32) + " is not a finite double";
   return {};
 }
 
@@ -101,8 +94,8 @@ struct Attribute {
     }
     std::int64_t i = 0;
     const Parsed parsed = parse_number(t, i);
-    if (parsed == Parsed::NotANumber) return quoted(token) + " is not a vertex reference";
-    if (parsed == Parsed::OutOfRange) return std::string(name) + " index " + quoted(t) + " is out of range";
+    if (parsed == Parsed::NotANumber) return io::quoted(token, 32) + " is not a vertex reference";
+    if (parsed == Parsed::OutOfRange) return std::string(name) + " index " + io::quoted(t, 32) + " is out of range";
     if (i == 0) return std::string(name) + " index 0 (indices count from 1)";
     std::int64_t index = 0;
     if (i > 0) {
@@ -218,8 +211,8 @@ bool parse_obj(std::string_view text, double max_abs, ObjMesh& out, std::string&
       while (tokens.next(token)) {
         std::int64_t i = 0;
         const Parsed parsed = parse_number(token.substr(0, token.find('/')), i);
-        if (parsed == Parsed::NotANumber) return fail(quoted(token) + " is not a vertex reference");
-        if (parsed == Parsed::OutOfRange) return fail("vertex index " + quoted(token) + " is out of range");
+        if (parsed == Parsed::NotANumber) return fail(io::quoted(token, 32) + " is not a vertex reference");
+        if (parsed == Parsed::OutOfRange) return fail("vertex index " + io::quoted(token, 32) + " is out of range");
         if (i == 0) return fail("vertex index 0 (indices count from 1)");
         std::int64_t index = 0;
         if (i > 0) {
