@@ -15,6 +15,7 @@
 
 #include "batch.h"
 #include "enum_option.h"
+#include "face_pattern.h"
 #include "output_check.h"
 #include "report.h"
 #include "shpack/convert_request.h"
@@ -31,10 +32,6 @@ namespace shpack::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-// --faces PATTERN: {face} becomes each of these, in Unity's face order +X -X +Y -Y +Z -Z.
-constexpr std::string_view kFacePlaceholder = "{face}";
-constexpr std::array<std::string_view, 6> kFaceNames = {"px", "nx", "py", "ny", "pz", "nz"};
 
 // `text` with every `from` replaced by `to`.
 std::string replaced(std::string text, const std::string& from, std::string_view to) {
@@ -76,15 +73,6 @@ struct Plan {
   std::vector<std::string> faces;  // the six --faces files, patterns expanded; empty without --faces
   std::string problem;
 };
-
-// `pattern` with every {face} replaced by `name`.
-std::string expand_face_pattern(std::string pattern, std::string_view name) {
-  for (std::size_t at = pattern.find(kFacePlaceholder); at != std::string::npos;
-       at = pattern.find(kFacePlaceholder, at + name.size())) {
-    pattern.replace(at, kFacePlaceholder.size(), name);
-  }
-  return pattern;
-}
 
 // The six face files of --faces: the six values as given, or one pattern expanded in Unity's
 // face order. Returns the usage problem, or "".

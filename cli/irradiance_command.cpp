@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "enum_option.h"
+#include "face_pattern.h"
 #include "report.h"
 #include "shpack/option_choices.h"
 #include "shpack/io/exr_writer.h"
@@ -76,22 +77,18 @@ CLI::App* add_irradiance_command(CLI::App& app, IrradianceOptions& options) {
 
 namespace {
 
-constexpr std::string_view kFacePlaceholder = "{face}";
-
 // One file, or for faces the six faces of the horizontal strip it was rendered as (+X -X
 // +Y -Y +Z -Z left to right, none turned: cube_layout.h), each to the pattern with {face}
 // replaced by px nx py ny pz nz. Each file is written whole or not at all (atomic_write.h).
 io::IoStatus write_image(const IrradianceOptions& options, const IrradianceImage& image) {
   if (options.layout != Layout::Faces)
     return io::write_exr_rgb(options.output, image.width, image.height, image.rgb);
-  const char* names[6] = {"px", "nx", "py", "ny", "pz", "nz"};
   const std::uint32_t n = image.height;
   for (std::uint32_t f = 0; f < 6; ++f) {
     std::vector<float> face(std::size_t{3} * n * n);
     for (std::uint32_t y = 0; y < n; ++y)
       std::copy_n(image.rgb.begin() + 3 * (std::size_t{y} * image.width + f * n), 3 * n, face.begin() + 3 * std::size_t{y} * n);
-    std::string path = options.output;
-    path.replace(path.find(kFacePlaceholder), kFacePlaceholder.size(), names[f]);
+    const std::string path = expand_face_pattern(options.output, kFaceNames[f]);
     if (io::IoStatus st = io::write_exr_rgb(path, n, n, face); !st.ok()) return st;
   }
   return io::IoStatus::success();
@@ -138,7 +135,7 @@ int run_irradiance(const IrradianceOptions& options) {
     report_error(shown(st.message));
     return kExitFailure;
   }
-  ConvertOptions convert;
+  shpack::ConvertOptions convert;
   convert.nonfinite = NonFinite::Zero;  // as the reference reads NaN/Inf texels: black
   convert.threads = options.threads;
   convert.finish.colour_matrix = source.info().colour.matrix;

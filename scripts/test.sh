@@ -28,12 +28,12 @@ done
 # -g1: line tables for the sanitizers' reports, without the full debug info that makes the
 # build and link slower (CI should stay under 15 minutes on two cores).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
-  -DSHPACK_WERROR=ON -DSHPACK_SANITIZE=ON -DSHPACK_BUILD_BENCH=OFF  # the benchmarks are not run here
+  -DSHPACK_WERROR=ON -DSHPACK_SANITIZE=ON -DSHPACK_UNITY_BUILD=ON -DSHPACK_BUILD_BENCH=OFF  # the benchmarks are not run here
 step cmake --build build-asan -j"$(nproc)"
 step ctest --test-dir build-asan --output-on-failure -j2 -LE large
 
 cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DSHPACK_FUZZ_SECONDS=10 -DSHPACK_BUILD_FUZZERS=ON -DSHPACK_BUILD_TESTS=OFF -DSHPACK_BUILD_BENCH=OFF
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DSHPACK_FUZZ_SECONDS=10 -DSHPACK_UNITY_BUILD=ON -DSHPACK_BUILD_FUZZERS=ON -DSHPACK_BUILD_TESTS=OFF -DSHPACK_BUILD_BENCH=OFF
 step cmake --build build-fuzz -j"$(nproc)" --target shpack_fuzzers
 step ctest --test-dir build-fuzz --output-on-failure -j2 -L fuzz
 
@@ -43,6 +43,6 @@ step ctest --test-dir build-fuzz --output-on-failure -j2 -L fuzz
 # -O1 and glue code at -O0: the large test measures memory, not speed; -O1 builds this tree
 # in 0.8 of -O3's time (153 against 190 s), and glue at -O0 in 124 s (one run each).
 cmake -S . -B build-large -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DSHPACK_GLUE_O0=ON \
-  -DSHPACK_WERROR=ON -DSHPACK_BUILD_BENCH=OFF -DSHPACK_BUILD_PYTHON=ON
+  -DSHPACK_UNITY_BUILD=ON -DSHPACK_WERROR=ON -DSHPACK_BUILD_BENCH=OFF -DSHPACK_BUILD_PYTHON=ON
 step cmake --build build-large -j"$(nproc)" --target shpack_installable shpack_large_tests
 step ctest --test-dir build-large --output-on-failure -L 'large|python'

@@ -17,7 +17,7 @@
 namespace shpack::io {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;  // keeps the keys in the order written
 
 // Coefficients with many significant digits and both signs, so that a writer that
 // rounds anything shows it.
@@ -40,14 +40,14 @@ ShDocument sample_document() {
   return doc;
 }
 
-std::vector<std::string> keys(const Json& object) {
+std::vector<std::string> keys(const OrderedJson& object) {
   std::vector<std::string> out;
   for (const auto& item : object.items()) out.push_back(item.key());
   return out;
 }
 
 TEST(JsonWriter, KeysAreThoseOfTheDesignInOrder) {
-  const Json j = Json::parse(to_json(sample_document()));
+  const OrderedJson j = OrderedJson::parse(to_json(sample_document()));
   EXPECT_EQ(keys(j), (std::vector<std::string>{"schema_version", "generator", "source", "options", "frame",
                                                "radiance_sh", "sphericalHarmonicsL2", "shader",
                                                "diagnostics"}));
@@ -64,7 +64,7 @@ TEST(JsonWriter, KeysAreThoseOfTheDesignInOrder) {
 TEST(JsonWriter, WritesTheViewErrorWhenTheDocumentHasOne) {
   ShDocument doc = sample_document();
   doc.view_error = shpack::ViewError{12.5, 4.25, 0.5, 2, {0, 1, 0}};
-  const Json d = Json::parse(to_json(doc))["diagnostics"];
+  const OrderedJson d = OrderedJson::parse(to_json(doc))["diagnostics"];
   EXPECT_EQ(d["unity_view_error_max_pct"], 12.5);
   EXPECT_EQ(d["unity_view_error_rms_pct"], 4.25);
   EXPECT_EQ(d["unity_view_error_bound_pct"], 0.5);
@@ -73,23 +73,23 @@ TEST(JsonWriter, WritesTheViewErrorWhenTheDocumentHasOne) {
 
 TEST(JsonWriter, TheOptimalWindowWritesWhatItChangedInsteadOfFactors) {
   ShDocument doc = sample_document();
-  EXPECT_FALSE(Json::parse(to_json(doc))["diagnostics"].contains("window_rms_change"));  // only with optimal
+  EXPECT_FALSE(OrderedJson::parse(to_json(doc))["diagnostics"].contains("window_rms_change"));  // only with optimal
   doc.window.kind = shpack::WindowKind::Optimal;
   doc.sh.window.rms_change = {0.125, 0.0, 0.5};
   doc.sh.window.planes = {3, 0, 7};
-  const Json j = Json::parse(to_json(doc));
+  const OrderedJson j = OrderedJson::parse(to_json(doc));
   EXPECT_EQ(j["options"]["window"], "optimal");
-  EXPECT_EQ(j["diagnostics"]["window_rms_change"], Json::array({0.125, 0.0, 0.5}));
-  EXPECT_EQ(j["diagnostics"]["window_planes"], Json::array({3, 0, 7}));
+  EXPECT_EQ(j["diagnostics"]["window_rms_change"], OrderedJson::array({0.125, 0.0, 0.5}));
+  EXPECT_EQ(j["diagnostics"]["window_planes"], OrderedJson::array({3, 0, 7}));
 }
 
 TEST(JsonWriter, ValuesAreThoseOfTheDocument) {
   const ShDocument doc = sample_document();
-  const Json j = Json::parse(to_json(doc));
+  const OrderedJson j = OrderedJson::parse(to_json(doc));
   EXPECT_EQ(j["schema_version"], 1);
   EXPECT_EQ(j["generator"], "shpack 0.1.0");
-  EXPECT_EQ(j["source"]["files"], Json::array({"sky.exr"}));
-  EXPECT_EQ(j["source"]["sha256"], Json::array({std::string(64, 'a')}));
+  EXPECT_EQ(j["source"]["files"], OrderedJson::array({"sky.exr"}));
+  EXPECT_EQ(j["source"]["sha256"], OrderedJson::array({std::string(64, 'a')}));
   EXPECT_EQ(j["source"]["layout"], "equirect");
   EXPECT_EQ(j["source"]["width"], 1024);
   EXPECT_EQ(j["source"]["height"], 512);
@@ -101,15 +101,15 @@ TEST(JsonWriter, ValuesAreThoseOfTheDocument) {
   EXPECT_EQ(j["diagnostics"]["nonfinite_texels"], 2);
   EXPECT_EQ(j["diagnostics"]["negative_texels"], 12);
   EXPECT_EQ(j["diagnostics"]["ignored_channels"], 1);
-  EXPECT_EQ(j["diagnostics"]["min_e_over_pi"], Json::array({0.0, -0.125, -0.25}));
-  EXPECT_EQ(j["diagnostics"]["min_e_over_pi_direction"][2], Json::array({0.0, -1.0, 0.0}));
+  EXPECT_EQ(j["diagnostics"]["min_e_over_pi"], OrderedJson::array({0.0, -0.125, -0.25}));
+  EXPECT_EQ(j["diagnostics"]["min_e_over_pi_direction"][2], OrderedJson::array({0.0, -1.0, 0.0}));
 }
 
 TEST(JsonWriter, NumbersReadBackExactly) {
   // Doubles in shortest round-trip form, floats as the double of equal value: parsing
   // the text gives the very same bits.
   const ShDocument doc = sample_document();
-  const Json j = Json::parse(to_json(doc));
+  const OrderedJson j = OrderedJson::parse(to_json(doc));
   const UnitySphericalHarmonicsL2 floats = to_unity_sh(doc.sh.unity_form);
   const UnityShaderVectors vectors = to_shader_vectors(doc.sh.unity_form);
   for (int c = 0; c < kChannelCount; ++c) {
@@ -159,8 +159,8 @@ std::string read_error(const std::string& text, IoErrc want) {
 }
 
 TEST(JsonReader, ErrorsPointAtTheValue) {
-  const Json good = Json::parse(to_json(sample_document()));
-  Json j = good;
+  const OrderedJson good = OrderedJson::parse(to_json(sample_document()));
+  OrderedJson j = good;
   j["shader"]["unity_SHBg"][2] = "x";
   EXPECT_EQ(read_error(j.dump(), IoErrc::BadDocument), "/shader/unity_SHBg/2: expected a number");
   j = good;

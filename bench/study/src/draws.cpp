@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace shpack::study {
 namespace {
@@ -30,6 +31,8 @@ double quantile(std::vector<double> values, double p) {
   const std::size_t above = std::min(below + 1, values.size() - 1);
   return values[below] + (h - static_cast<double>(below)) * (values[above] - values[below]);
 }
+
+double median(std::vector<double> values) { return quantile(std::move(values), 0.5); }
 
 Interval rms_interval(const std::vector<double>& values) {
   if (values.size() < 2 || any_nan(values)) return {kNaN, kNaN};

@@ -9,6 +9,7 @@
 #include "shpack/bake/lightmap_bake.h"
 #include "shpack/scene/scene_loader.h"
 #include "shpack/study/accuracy.h"
+#include "shpack/study/draws.h"
 
 namespace shpack::study {
 namespace {
@@ -79,11 +80,6 @@ io::IoStatus bake_with(const scene::Scene& base, Receiver kind, int samples, std
   r.count = static_cast<std::size_t>(std::count(r.measured.begin(), r.measured.end(), true));
   out = std::move(r);
   return io::IoStatus::success();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
 // Whether receiver k counts in both bakes (validity is measured with the bake's seed, so a

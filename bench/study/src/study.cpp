@@ -5,6 +5,7 @@
 #include <map>
 #include <thread>
 
+#include "shpack/study/draws.h"
 #include "shpack/study/load_average.h"
 #include "shpack/study/method_sweep.h"
 #include "shpack/sampling_variance.h"
@@ -14,13 +15,6 @@ namespace {
 
 bool uses_threads(SamplingMethod m) noexcept {
   return m == SamplingMethod::Exact || m == SamplingMethod::Center || m == SamplingMethod::Mip;
-}
-
-// The median of an odd count is its middle; of an even count, the mean of the two middles.
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t mid = values.size() / 2;
-  return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
 }
 
 // True once the RMS error over the draws is known to `target` (relative half-width of its

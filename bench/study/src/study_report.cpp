@@ -11,13 +11,14 @@
 #include <map>
 #include <thread>
 
+#include "shpack/study/draws.h"
 #include "shpack/study/method_sweep.h"
 
 namespace shpack::study {
 namespace {
 
 namespace fs = std::filesystem;
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string spec_name(const MethodSpec& spec) { return std::string(method_name(spec).view()); }
@@ -40,10 +41,7 @@ std::string fmt_count(double v) {
 // Median of the non-NaN values; NaN if there are none.
 double median_of(std::vector<double> values) {
   std::erase_if(values, [](double v) { return std::isnan(v); });
-  if (values.empty()) return kNaN;
-  std::sort(values.begin(), values.end());
-  const std::size_t mid = values.size() / 2;
-  return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+  return median(std::move(values));
 }
 
 double max_of(const std::vector<double>& values) {
@@ -273,17 +271,17 @@ std::string markdown_report(const std::vector<StudyRecord>& records) {
 }
 
 std::string json_report(const std::vector<StudyRecord>& records) {
-  Json array = Json::array();
+  OrderedJson array = OrderedJson::array();
   for (const StudyRecord& r : records) {
     const bool has_param = r.spec.method != SamplingMethod::Exact && r.spec.method != SamplingMethod::Center;
-    Json j;
+    OrderedJson j;
     j["input"] = r.input;
     j["width"] = r.width;
     j["height"] = r.height;
     j["method"] = family_name(r.spec.method);
-    j["param"] = has_param ? Json(r.spec.param) : Json(nullptr);
+    j["param"] = has_param ? OrderedJson(r.spec.param) : OrderedJson(nullptr);
     j["spec"] = spec_name(r.spec);
-    j["seed"] = uses_seed(r.spec.method) ? Json(r.spec.seed) : Json(nullptr);
+    j["seed"] = uses_seed(r.spec.method) ? OrderedJson(r.spec.seed) : OrderedJson(nullptr);
     j["seeds"] = r.seeds;
     j["threads"] = r.threads;
     j["repeats"] = r.repeats;
@@ -308,7 +306,7 @@ std::string json_report(const std::vector<StudyRecord>& records) {
     j["err_max_pct_ci95"] = {r.err_max_interval.low, r.err_max_interval.high};
     array.push_back(std::move(j));
   }
-  return array.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+  return array.dump(2, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
 }
 
 }  // namespace shpack::study

@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "shpack/study/draws.h"
 #include "shpack/study/gnuplot.h"
 #include "shpack/study/view_error_study.h"
 
@@ -35,11 +36,6 @@ Grid grid_of(const std::vector<ViewErrorRecord>& records) {
     g.at[{r.input, r.config}] = &r;
   }
   return g;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
 // One table: a row per input of `value` (with the lights count where lights were taken out),

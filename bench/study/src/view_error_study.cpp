@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "shpack/study/draws.h"
+
 namespace shpack::study {
 namespace {
 
@@ -16,12 +18,6 @@ ViewErrorConfig config(std::string label, unsigned lights, bool sun, std::string
   options.extract_sun = sun;
   (void)parse_window(window, options.finish.window);  // the names below all parse
   return {std::move(label), options};
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t mid = values.size() / 2;
-  return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
 }
 
 // The lowest E/pi of the SH (the lights add none below it: max(0, n . l) >= 0) in % of the

@@ -12,17 +12,17 @@
 namespace shpack::bake {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 // The inside of a JSON array, "a,b,c", of the values given (nlohmann's shortest forms).
-std::string array_items(const Json& array) {
+std::string array_items(const OrderedJson& array) {
   const std::string text = array.dump();
   return text.substr(1, text.size() - 2);
 }
 
 // Probe validity (docs/scenes.md, "Probe validity"): whether the probe is inside geometry, and
 // what it got instead.
-void put_validity(const scene::Scene& scene, const ProbeValidity& v, Json& diagnostics) {
+void put_validity(const scene::Scene& scene, const ProbeValidity& v, OrderedJson& diagnostics) {
   diagnostics["valid"] = v.valid;
   diagnostics["backface_fraction"] = v.backface_fraction;
   if (!v.valid && v.backface_shape) diagnostics["inside"] = scene.geometry[*v.backface_shape].label;
@@ -35,10 +35,10 @@ void put_validity(const scene::Scene& scene, const ProbeValidity& v, Json& diagn
 
 // The Monte Carlo effects' sampling of one probe (bake.h, EffectSampling): the estimated
 // error of everything together and, per effect, the samples taken and the error.
-void put_sampling(const BakeResult& result, std::size_t k, Json& diagnostics) {
+void put_sampling(const BakeResult& result, std::size_t k, OrderedJson& diagnostics) {
   if (k >= result.error_estimate_pct.size()) return;
   diagnostics["error_estimate_pct"] = result.error_estimate_pct[k];
-  Json samples = Json::object(), errors = Json::object(), capped = Json::array();
+  OrderedJson samples = OrderedJson::object(), errors = OrderedJson::object(), capped = OrderedJson::array();
   for (std::size_t e = 0; e < kEffectCount; ++e) {
     if (!result.costs[e].enabled) continue;
     const EffectSampling& s = result.sampling[k][e];
@@ -54,7 +54,7 @@ void put_sampling(const BakeResult& result, std::size_t k, Json& diagnostics) {
 }
 
 // Per effect over the probes: the largest error estimate, the samples' range, the capped count.
-void put_effect_sampling(const BakeResult& result, std::size_t e, Json& effect) {
+void put_effect_sampling(const BakeResult& result, std::size_t e, OrderedJson& effect) {
   double worst = 0;
   std::uint64_t least = 0, most = 0, capped = 0;
   bool any = false;
@@ -106,7 +106,7 @@ io::IoStatus bake_to_json(const scene::Scene& scene, const BakeResult& result, c
       const Point3& p = scene.probes[k];
       const char* separator = k == 0 ? "" : ",";
       if (options.format == BakeFormat::UnityProbes) {
-        Json position = Json::array(), sh = Json::array();
+        OrderedJson position = OrderedJson::array(), sh = OrderedJson::array();
         for (const double v : {p.x, p.y, p.z}) position.push_back(static_cast<double>(static_cast<float>(v)));
         for (const auto& channel : unity_sh)
           for (const float v : channel) sh.push_back(static_cast<double>(v));
@@ -114,22 +114,22 @@ io::IoStatus bake_to_json(const scene::Scene& scene, const BakeResult& result, c
         flat.append(separator).append(array_items(sh));
         continue;
       }
-      Json probe;
+      OrderedJson probe;
       probe["position"] = {p.x, p.y, p.z};
       io::put_sh_values(sh, probe);
-      Json diagnostics = Json::object();
+      OrderedJson diagnostics = OrderedJson::object();
       io::put_sh_diagnostics(sh, diagnostics);
       if (k < result.validity.size()) put_validity(scene, result.validity[k], diagnostics);
       put_sampling(result, k, diagnostics);
       probe["diagnostics"] = std::move(diagnostics);
-      probes.append(separator).append("\n    ").append(probe.dump(-1, ' ', false, Json::error_handler_t::replace));
+      probes.append(separator).append("\n    ").append(probe.dump(-1, ' ', false, OrderedJson::error_handler_t::replace));
     }
     if (options.format == BakeFormat::UnityProbes) {
       json = "{\"schema_version\":1,\"format\":\"unity-probes\",\"count\":" + std::to_string(result.radiance.size()) +
              ",\"positions\":[" + positions + "],\"sphericalHarmonicsL2\":[" + flat + "]}\n";
       return io::IoStatus::success();
     }
-    Json j;
+    OrderedJson j;
     j["schema_version"] = 1;
     j["generator"] = std::string("shpack ") + io::shpack_version();
     j["scene"] = {{"file", scene.file.filename().string()}, {"sha256", scene.sha256},
@@ -139,11 +139,11 @@ io::IoStatus bake_to_json(const scene::Scene& scene, const BakeResult& result, c
     j["options"] = {{"window", window_name(options.window).text}};
     j["sampling"] = {{"target_error_pct", scene.settings.target_error_pct}, {"max_samples", scene.settings.max_samples}};
     j["probes"] = nullptr;  // replaced by the probes' text below
-    Json effects = Json::object();
+    OrderedJson effects = OrderedJson::object();
     for (std::size_t e = 0; e < kEffectCount; ++e) {
       const EffectCost& c = result.costs[e];
       if (!c.enabled) continue;
-      Json effect = {{"time_ms", c.time_ms}, {"cpu_ms", c.cpu_ms}, {"rays", c.rays},
+      OrderedJson effect = {{"time_ms", c.time_ms}, {"cpu_ms", c.cpu_ms}, {"rays", c.rays},
                      {"samples", c.samples}, {"analytic", c.analytic}};
       put_effect_sampling(result, e, effect);
       effects[effect_name(static_cast<Effect>(e))] = std::move(effect);
@@ -157,7 +157,7 @@ io::IoStatus bake_to_json(const scene::Scene& scene, const BakeResult& result, c
                      {"moved", vc.moved}, {"dilated", vc.dilated}, {"time_ms", result.validity_cost.time_ms},
                      {"rays", result.validity_cost.rays}};
     if (options.lightmaps) {
-      Json maps = Json::array();
+      OrderedJson maps = OrderedJson::array();
       for (std::size_t m = 0; m < options.lightmaps->maps.size(); ++m) {
         const LightmapTexels& map = options.lightmaps->maps[m];
         float worst = 0;
@@ -174,7 +174,7 @@ io::IoStatus bake_to_json(const scene::Scene& scene, const BakeResult& result, c
     }
     // One probe per line inside the indented document. The only top-level "probes": null is
     // the placeholder ("scene" holds "probes" too, as a number).
-    json = j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+    json = j.dump(2, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
     const std::string placeholder = "\n  \"probes\": null,";
     const std::size_t at = json.find(placeholder);
     json.replace(at, placeholder.size(), "\n  \"probes\": [" + probes + "\n  ],");

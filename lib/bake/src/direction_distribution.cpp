@@ -7,7 +7,7 @@
 namespace shpack::bake {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 
 // The index k with cdf[k] <= u < cdf[k + 1] (cdf non-decreasing, cdf.front() = 0), skipping
 // empty intervals; u is rescaled to where it falls inside [cdf[k], cdf[k + 1]), so one
@@ -45,7 +45,7 @@ DirectionDistribution::DirectionDistribution(std::uint32_t cols, std::uint32_t r
   for (double& v : row_cdf_) v /= total_;
   for (std::uint32_t j = 0; j < rows; ++j) {
     // Omega(cell) = (2 pi / cols) (cos theta_j - cos theta_(j+1)).
-    const double omega = 2.0 * kPi / cols * (std::cos(kPi * j / rows) - std::cos(kPi * (j + 1) / rows));
+    const double omega = 2.0 * pi / cols * (std::cos(pi * j / rows) - std::cos(pi * (j + 1) / rows));
     for (std::uint32_t i = 0; i < cols; ++i)
       density_[static_cast<std::size_t>(j) * cols + i] = w[static_cast<std::size_t>(j) * cols + i] / total_ / omega;
   }
@@ -55,9 +55,9 @@ DirectionSample DirectionDistribution::sample(double u1, double u2) const noexce
   const std::uint32_t j = pick(row_cdf_.data(), rows_, u1);
   const std::uint32_t i = pick(&cell_cdf_[static_cast<std::size_t>(j) * (cols_ + 1)], cols_, u2);
   // Uniform in solid angle inside the cell: cos theta uniform between the row's edges.
-  const double c0 = std::cos(kPi * j / rows_), c1 = std::cos(kPi * (j + 1) / rows_);
+  const double c0 = std::cos(pi * j / rows_), c1 = std::cos(pi * (j + 1) / rows_);
   const double y = c0 + (c1 - c0) * u1, s = std::sqrt(std::fmax(0.0, (1.0 - y) * (1.0 + y)));
-  const double lon = 2.0 * kPi * (0.5 - (i + u2) / cols_);
+  const double lon = 2.0 * pi * (0.5 - (i + u2) / cols_);
   const Vec3d v{s * std::cos(lon), y, s * std::sin(lon)};
   const Matrix3& r = rotation_;
   const Vec3d d{r[0][0] * v.x + r[0][1] * v.y + r[0][2] * v.z, r[1][0] * v.x + r[1][1] * v.y + r[1][2] * v.z,
@@ -71,11 +71,11 @@ double DirectionDistribution::pdf(const Vec3d& d) const noexcept {
   const double vx = r[0][0] * d.x + r[1][0] * d.y + r[2][0] * d.z;
   const double vy = r[0][1] * d.x + r[1][1] * d.y + r[2][1] * d.z;
   const double vz = r[0][2] * d.x + r[1][2] * d.y + r[2][2] * d.z;
-  double u = 0.5 - std::atan2(vz, vx) / (2.0 * kPi);
+  double u = 0.5 - std::atan2(vz, vx) / (2.0 * pi);
   u -= std::floor(u);
   const double theta = std::acos(std::clamp(vy, -1.0, 1.0));
   const auto i = std::min(cols_ - 1, static_cast<std::uint32_t>(u * cols_));
-  const auto j = std::min(rows_ - 1, static_cast<std::uint32_t>(theta / kPi * rows_));
+  const auto j = std::min(rows_ - 1, static_cast<std::uint32_t>(theta / pi * rows_));
   return density_[static_cast<std::size_t>(j) * cols_ + i];
 }
 

@@ -9,7 +9,7 @@
 namespace shpack::bake {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 
 Vec3d vertex(const scene::SceneShape& s, std::uint32_t index) noexcept {
   const std::size_t k = 3 * static_cast<std::size_t>(s.indices[index]);
@@ -59,7 +59,7 @@ EmitterSampler::EmitterSampler(const std::vector<scene::SceneShape>& geometry)
     Emitter e;
     e.shape = s;
     if (shape.type == scene::ShapeType::Sphere) {
-      e.area = 4.0 * kPi * shape.radius * shape.radius;
+      e.area = 4.0 * pi * shape.radius * shape.radius;
     } else {
       const std::size_t n = shape.indices.size() / 3;
       e.triangle_cdf.assign(n + 1, 0.0);
@@ -97,16 +97,16 @@ EmitterSample EmitterSampler::sample(const Vec3d& from, double u1, double u2) co
       // Uniform in the cone: 1 - cos theta' = v uniform in [0, 1 - cos a].
       Vec3d e1, e2;
       basis_of(axis, e1, e2);
-      const double v = one_minus_cos * u1, s = std::sqrt(v * (2.0 - v)), phi = 2.0 * kPi * u2;
+      const double v = one_minus_cos * u1, s = std::sqrt(v * (2.0 - v)), phi = 2.0 * pi * u2;
       out.dir = (1.0 - v) * axis + (s * std::cos(phi)) * e1 + (s * std::sin(phi)) * e2;
       // Distance to the near side: t = (r^2 - R^2) / (b + sqrt(b^2 - r^2 + R^2)), b = w.(c - p).
       const double b = dot(out.dir, vec(shape.centre) - from), k = (r - shape.radius) * (r + shape.radius);
       out.distance = k / (b + std::sqrt(std::fmax(0.0, b * b - k)));
-      out.pdf = p_shape / (2.0 * kPi * one_minus_cos);
+      out.pdf = p_shape / (2.0 * pi * one_minus_cos);
       return out;
     }
     // Inside: uniform on the sphere, z = 1 - 2 u1.
-    const double z = 1.0 - 2.0 * u1, s = std::sqrt(std::fmax(0.0, 1.0 - z * z)), phi = 2.0 * kPi * u2;
+    const double z = 1.0 - 2.0 * u1, s = std::sqrt(std::fmax(0.0, 1.0 - z * z)), phi = 2.0 * pi * u2;
     n = {s * std::cos(phi), s * std::sin(phi), z};
     x = vec(shape.centre) + shape.radius * n;
   } else {
@@ -137,7 +137,7 @@ double EmitterSampler::pdf(const Vec3d& from, const Vec3d& dir, const Hit& hit) 
   if (shape.type == scene::ShapeType::Sphere) {
     Vec3d axis;
     double r, one_minus_cos;
-    if (cone_of(shape, from, axis, r, one_minus_cos)) return p_shape / (2.0 * kPi * one_minus_cos);
+    if (cone_of(shape, from, axis, r, one_minus_cos)) return p_shape / (2.0 * pi * one_minus_cos);
   }
   const double cos_x = std::fabs(dot(hit.normal, dir));
   return cos_x > 0 ? p_shape / e.area * hit.t * hit.t / cos_x : 0.0;

@@ -11,7 +11,7 @@
 namespace shpack::bake {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 using Member = UnityShaderVectors::Float4 UnityShaderVectors::*;
 
 struct Group {
@@ -124,7 +124,7 @@ std::string lightmap_hlsl() {
 
 std::string lightmap_sidecar(const scene::Scene& scene, const scene::LightmapTarget& target,
                              const LightmapTexels& map, const LightmapBakeResult& result) {
-  Json j;
+  OrderedJson j;
   j["schema_version"] = 1;
   j["generator"] = std::string("shpack ") + io::shpack_version();
   j["kind"] = "shpack-sh-lightmap";
@@ -141,7 +141,7 @@ std::string lightmap_sidecar(const scene::Scene& scene, const scene::LightmapTar
       "(zero below it): dot(SHA, (n, 1)) [+ the L2 terms] = E(n)/pi, the irradiance over pi";
   j["uv"] = "the lightmap UV set (glTF TEXCOORD_1, OBJ vt, a plane's own), (0, 0) at the image's bottom left; "
             "row 0 of each image is its top";
-  Json files = Json::object();
+  OrderedJson files = OrderedJson::object();
   for (const char* g : {"SHAr", "SHAg", "SHAb"}) files[g] = target.name + "." + std::string(g) + ".exr";
   if (target.l2)
     for (const char* g : {"SHBr", "SHBg", "SHBb", "SHC"}) files[g] = target.name + "." + std::string(g) + ".exr";

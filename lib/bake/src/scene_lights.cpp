@@ -10,7 +10,7 @@
 namespace shpack::bake {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 using scene::LightType;
 
@@ -48,9 +48,9 @@ Rgb extended_radiance(const scene::SceneLight& light) noexcept {
   double scale = 1.0;
   if (light.type == LightType::Directional) {
     const double s = std::sin(0.5 * light.angular_diameter);
-    scale = 1.0 / (kPi * s * s);  // E = L pi sin^2 a
+    scale = 1.0 / (pi * s * s);  // E = L pi sin^2 a
   } else if (light.type == LightType::Sphere) {
-    scale = 1.0 / (kPi * light.radius * light.radius);  // I = pi R^2 L
+    scale = 1.0 / (pi * light.radius * light.radius);  // I = pi R^2 L
   }
   for (double& v : out) v *= scale;
   return out;
@@ -176,11 +176,11 @@ LightSample light_point(const scene::SceneLight& light, Vec3d from, double u1, d
       const double one_minus_cos = cap_of(light, from, axis);
       if (one_minus_cos == 0) return {};
       basis_of(axis, e1, e2);
-      const double v = one_minus_cos * u1, s = std::sqrt(v * (2.0 - v)), phi = 2.0 * kPi * u2;
+      const double v = one_minus_cos * u1, s = std::sqrt(v * (2.0 - v)), phi = 2.0 * pi * u2;
       const Vec3d w = (1.0 - v) * axis + (s * std::cos(phi)) * e1 + (s * std::sin(phi)) * e2;
       const double dist =
           light.type == LightType::Sphere ? sphere_distance(from, w, vec(light.position), light.radius) : kInf;
-      return {w, dist, 2.0 * kPi * one_minus_cos};
+      return {w, dist, 2.0 * pi * one_minus_cos};
     }
     case LightType::Rect:
     case LightType::Disk: {
@@ -193,12 +193,12 @@ LightSample light_point(const scene::SceneLight& light, Vec3d from, double u1, d
         n = vec(light.direction);
         basis_of(n, e1, e2);
       }
-      const double area = rect ? light.width * light.height : kPi * light.radius * light.radius;
+      const double area = rect ? light.width * light.height : pi * light.radius * light.radius;
       Vec3d x;
       if (rect) {
         x = c + ((u1 - 0.5) * light.width) * e1 + ((u2 - 0.5) * light.height) * e2;
       } else {
-        const double rho = light.radius * std::sqrt(u1), phi = 2.0 * kPi * u2;
+        const double rho = light.radius * std::sqrt(u1), phi = 2.0 * pi * u2;
         x = c + (rho * std::cos(phi)) * e1 + (rho * std::sin(phi)) * e2;
       }
       const Vec3d to = x - from;

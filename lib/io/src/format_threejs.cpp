@@ -9,7 +9,7 @@
 namespace shpack::io {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 // Object3D.toJSON keys every object by a uuid and ObjectLoader copies it unchecked. One
 // derived from the input's SHA-256 keeps the output reproducible; the version nibble 8 and
@@ -35,15 +35,15 @@ std::string uuid_of(const ShDocument& doc) {
 // returns E, so the shader's indirect diffuse is E * albedo / pi, Unity's E/pi.
 std::string to_threejs(const ShDocument& doc) {
   const ShL2 sh = sh_to_engine_frame(EngineFrame::ThreeJs, doc.sh.radiance);
-  Json coefficients = Json::array();
+  OrderedJson coefficients = OrderedJson::array();
   for (int i = 0; i < kShCount; ++i)
     for (int c = 0; c < kChannelCount; ++c) coefficients.push_back(static_cast<double>(static_cast<float>(sh.c[c][i])));
-  Json provenance = Json::array();
+  OrderedJson provenance = OrderedJson::array();
   for (const std::string& line : detail::provenance_lines(doc)) provenance.push_back(line);
   provenance.push_back(std::string("sh: three.js SphericalHarmonics3 (radiance), ") +
                        engine_frame_spec(EngineFrame::ThreeJs).description);
   const std::vector<std::string> name = detail::stem_words(doc);
-  Json object = {{"uuid", uuid_of(doc)},
+  OrderedJson object = {{"uuid", uuid_of(doc)},
                  {"type", "LightProbe"},
                  {"name", name.front()},
                  {"layers", 1},
@@ -53,9 +53,9 @@ std::string to_threejs(const ShDocument& doc) {
                  {"intensity", 1},
                  {"sh", std::move(coefficients)},
                  {"userData", {{"shpack", std::move(provenance)}}}};
-  const Json out = {{"metadata", {{"version", 4.7}, {"type", "Object"}, {"generator", "Object3D.toJSON"}}},
+  const OrderedJson out = {{"metadata", {{"version", 4.7}, {"type", "Object"}, {"generator", "Object3D.toJSON"}}},
                     {"object", std::move(object)}};
-  return out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+  return out.dump(2, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
 }
 
 }  // namespace shpack::io

@@ -11,21 +11,21 @@
 namespace shpack::io {
 namespace {
 
-using Json = nlohmann::ordered_json;  // keeps keys in insertion order
+using OrderedJson = nlohmann::ordered_json;  // keeps keys in insertion order
 
 // The sun of --extract-sun (light_extraction.h), or a light of --extract-lights: what was removed, and the Unity light that
 // replaces it (unity_light.h).
-Json sun_json(const FinishedLight& sun) {
+OrderedJson sun_json(const FinishedLight& sun) {
   const SunLight& light = sun.light;
   const UnitySunLight& unity = sun.unity;
-  return {{"direction", dir_json<Json>(light.direction)},
+  return {{"direction", dir_json<OrderedJson>(light.direction)},
           {"irradiance", light.irradiance},
           {"sky_level", light.sky},
           {"angular_radius_deg", light.radius_deg},
           {"solid_angle_sr", light.solid_angle},
           {"texels", light.texels},
           {"unity_light",
-           {{"forward", dir_json<Json>(unity.forward)},
+           {{"forward", dir_json<OrderedJson>(unity.forward)},
             {"euler_deg", unity.euler_deg},
             {"quaternion", unity.quaternion},
             {"color", unity.colour},
@@ -39,7 +39,7 @@ const char* cube_frame_name(CubeFrame frame) {
 
 // "layer" when one was chosen, "cube_frame" for cube layouts, "colorspace" always, and the
 // colour matrix when one was applied.
-void add_reading(const ShDocument& doc, Json& source) {
+void add_reading(const ShDocument& doc, OrderedJson& source) {
   if (!doc.reading.layer.empty()) source["layer"] = doc.reading.layer;
   if (is_cube_layout(doc.source.layout)) source["cube_frame"] = cube_frame_name(doc.reading.cube_frame);
   source["colorspace"] = doc.reading.colorspace;
@@ -49,7 +49,7 @@ void add_reading(const ShDocument& doc, Json& source) {
 }  // namespace
 
 std::string to_json(const ShDocument& doc) {
-  Json j;
+  OrderedJson j;
   j["schema_version"] = kSchemaVersion;
   j["generator"] = std::string("shpack ") + shpack_version();
   j["source"] = {{"files", doc.source.files},
@@ -70,11 +70,11 @@ std::string to_json(const ShDocument& doc) {
   if (other_frame) j["radiance_sh_frame"] = engine_frame_spec(doc.radiance_frame).description;
   put_sh_values(doc.sh, j);
   if (other_frame) {
-    Json radiance = Json::array();
+    OrderedJson radiance = OrderedJson::array();
     for (const auto& channel : sh_to_engine_frame(doc.radiance_frame, doc.sh.radiance).c) radiance.push_back(channel);
     j["radiance_sh"] = std::move(radiance);
   }
-  Json diagnostics = {{"nonfinite_texels", doc.texels.nonfinite_texels},
+  OrderedJson diagnostics = {{"nonfinite_texels", doc.texels.nonfinite_texels},
                       {"negative_texels", doc.texels.negative_texels},
                       {"ignored_channels", doc.reading.ignored_channels}};
   put_sh_diagnostics(doc.sh, diagnostics);
@@ -90,12 +90,12 @@ std::string to_json(const ShDocument& doc) {
     diagnostics["unity_view_error_directions"] = kViewErrorDirections;
   }
   j["diagnostics"] = std::move(diagnostics);
-  if (doc.sun_extraction) j["sun"] = doc.sun ? sun_json(*doc.sun) : Json(nullptr);  // null: no sun found
+  if (doc.sun_extraction) j["sun"] = doc.sun ? sun_json(*doc.sun) : OrderedJson(nullptr);  // null: no sun found
   if (doc.light_extraction > 0) {  // --extract-lights: every light chosen, each a sun record
     j["light_candidates"] = doc.light_candidates;
-    Json lights = Json::array();
+    OrderedJson lights = OrderedJson::array();
     for (const ExtractedLight& light : doc.lights) {
-      Json record = sun_json(light.light);
+      OrderedJson record = sun_json(light.light);
       record["offset_deg"] = light.light.light.offset_deg;
       record["unity_view_error_before_pct"] = light.error_before_pct;
       record["unity_view_error_after_pct"] = light.error_after_pct;
@@ -104,7 +104,7 @@ std::string to_json(const ShDocument& doc) {
     j["lights"] = std::move(lights);
   }
   // A file name need not be UTF-8 on Linux: replace bad bytes rather than fail.
-  return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+  return j.dump(2, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
 }
 
 }  // namespace shpack::io

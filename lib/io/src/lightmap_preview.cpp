@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "shpack/light_extraction.h"  // kRec709Luminance
 #include "shpack/srgb.h"
 #include "shpack/vec3.h"
 
@@ -22,7 +23,6 @@ using Json = nlohmann::json;
 namespace fs = std::filesystem;
 
 constexpr std::uint64_t kMaxSidecarBytes = 16u << 20;
-constexpr std::array<double, 3> kLuminance{0.2126729, 0.7151522, 0.0721750};  // UnityCG's LinearRgbToLuminance
 
 struct Rgba {
   std::uint32_t width = 0, height = 0;
@@ -100,7 +100,7 @@ IoStatus render_lightmap_preview(const fs::path& sidecar, std::uint32_t size, Rg
   for (std::size_t t = 0; t < std::size_t{W} * H; ++t) {
     if (images[3].pixels[4 * t + 1] == 0) continue;
     double lum = 0;
-    for (int c = 0; c < 3; ++c) lum += kLuminance[c] * images[c].pixels[4 * t + 3];
+    for (int c = 0; c < 3; ++c) lum += kRec709Luminance[c] * images[c].pixels[4 * t + 3];
     sum += lum;
     ++used;
   }
@@ -118,7 +118,7 @@ IoStatus render_lightmap_preview(const fs::path& sidecar, std::uint32_t size, Rg
         for (int c = 0; c < 3; ++c) {
           const double l0 = images[c].pixels[4 * t + 3];
           panel[0][c] = encode(k * l0 / (1.0 + k * l0));
-          d = d + kLuminance[c] * Vec3{images[c].pixels[4 * t], images[c].pixels[4 * t + 1], images[c].pixels[4 * t + 2]};
+          d = d + kRec709Luminance[c] * Vec3{images[c].pixels[4 * t], images[c].pixels[4 * t + 1], images[c].pixels[4 * t + 2]};
         }
         const double len = std::sqrt(dot(d, d));
         const Vec3 u = len > 0 ? (1.0 / len) * d : Vec3{0, 0, 0};

@@ -11,6 +11,7 @@
 #include "shpack/conventions.h"
 #include "shpack/io/map_source.h"
 #include "shpack/layout.h"
+#include "shpack/light_extraction.h"  // kRec709Luminance
 #include "shpack/pipeline.h"
 #include "shpack/rotate.h"
 #include "shpack/unity_pack.h"
@@ -21,12 +22,10 @@ namespace {
 
 using detail::Rgb8;
 
-// Unity's LinearRgbToLuminance (UnityCG.cginc): Rec. 709 primaries, D65 white.
-constexpr std::array<double, 3> kLuminance = {0.2126729, 0.7151522, 0.0721750};
 constexpr std::uint32_t kMargin = 4;       // between panels
 
 double luminance(const std::array<double, 3>& rgb) {
-  return kLuminance[0] * rgb[0] + kLuminance[1] * rgb[1] + kLuminance[2] * rgb[2];
+  return kRec709Luminance[0] * rgb[0] + kRec709Luminance[1] * rgb[1] + kRec709Luminance[2] * rgb[2];
 }
 
 // What Unity shows for normal n: ShadeSH9, plus each directional light's Lambert term

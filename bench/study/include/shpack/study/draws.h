@@ -27,6 +27,10 @@ double rms(const std::vector<double>& values);
 // type 7, R's and NumPy's default). NaN if any value is NaN or there are none.
 double quantile(std::vector<double> values, double p);
 
+// The median: quantile(values, 0.5), the middle of an odd count and the mean of the two
+// middles of an even one. NaN if any value is NaN or there are none.
+double median(std::vector<double> values);
+
 // The 95% confidence interval of the RMS over draws as an estimate of sqrt(E[e^2]): the mean
 // of e^2 over n draws is asymptotically normal with standard error sd(e^2)/sqrt(n) (central
 // limit theorem; sd the sample standard deviation), so E[e^2] lies in
