@@ -17,6 +17,7 @@
 #include "enum_option.h"
 #include "face_pattern.h"
 #include "output_check.h"
+#include "replace_all.h"
 #include "report.h"
 #include "shpack/convert_request.h"
 #include "shpack/io/atomic_write.h"
@@ -33,13 +34,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// `text` with every `from` replaced by `to`.
-std::string replaced(std::string text, const std::string& from, std::string_view to) {
-  for (std::size_t at = text.find(from); !from.empty() && at != std::string::npos; at = text.find(from, at + to.size()))
-    text.replace(at, from.size(), to);
-  return text;
-}
-
 // Converts one input (or the six `faces`, when there are any); writes `output`, or stdout
 // when it is empty. Returns the error line to report, or "" on success; runs on any thread.
 // `spooled`: the temporary file holding stdin (stdin_spool.h) when `input` is it; the
@@ -54,7 +48,7 @@ std::string convert_one(const fs::path& input, const std::vector<std::string>& f
                                            : io::convert_cube_faces(faces, settings, doc);
       !st.ok()) {
     const std::string message = io::with_remedy(st, options.layout);
-    return spooled ? replaced(message, input.string(), io::kStdinName) : message;
+    return spooled ? replace_all(message, input.string(), io::kStdinName) : message;
   }
   if (spooled) doc.source.files = {io::kStdinName};
   doc.radiance_frame = options.frame;
