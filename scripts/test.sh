@@ -40,8 +40,9 @@ step ctest --test-dir build-fuzz --output-on-failure -j2 -L fuzz
 # The same Release build holds the Python module (python/), tested with Debian's
 # /usr/bin/python3 and NumPy against the command it was built with, and installed from it
 # (label python): shpack_installable is everything `cmake --install` copies.
-# -O1 and glue code at -O0: the large test measures memory, not speed; -O1 builds this tree
-# in 0.8 of -O3's time (153 against 190 s), and glue at -O0 in 124 s (one run each).
+# -O1 and glue code at -O0: the large test measures memory, not speed; -O1 built this tree
+# in 0.8 of -O3's time (153 against 190 s) and glue at -O0 in 124 s, one run each, before the
+# unity batches, with which this step took 133 s of a fresh clone's CI.
 cmake -S . -B build-large -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DSHPACK_GLUE_O0=ON \
   -DSHPACK_UNITY_BUILD=ON -DSHPACK_WERROR=ON -DSHPACK_BUILD_BENCH=OFF -DSHPACK_BUILD_PYTHON=ON
 step cmake --build build-large -j"$(nproc)" --target shpack_installable shpack_large_tests
