@@ -14,9 +14,9 @@ constexpr Chromaticities kRec2020 = {0.708, 0.292, 0.170, 0.797, 0.131, 0.046, 0
 
 constexpr Matrix3 kBradford = {{{0.8951, 0.2664, -0.1614}, {-0.7502, 1.7135, 0.0367}, {0.0389, -0.0685, 1.0296}}};
 
-using Vec3 = std::array<double, 3>;
+using Array3 = std::array<double, 3>;
 
-Vec3 xyz_of(double x, double y) { return {x / y, 1.0, (1.0 - x - y) / y}; }
+Array3 xyz_of(double x, double y) { return {x / y, 1.0, (1.0 - x - y) / y}; }
 
 Matrix3 multiply(const Matrix3& a, const Matrix3& b) {
   Matrix3 m{};
@@ -26,7 +26,7 @@ Matrix3 multiply(const Matrix3& a, const Matrix3& b) {
   return m;
 }
 
-Vec3 apply(const Matrix3& m, const Vec3& v) {
+Array3 apply(const Matrix3& m, const Array3& v) {
   return {m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2], m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
           m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2]};
 }
@@ -51,11 +51,11 @@ bool invert(const Matrix3& m, Matrix3& out) {
 bool rgb_to_xyz(const Chromaticities& c, Matrix3& m) {
   for (int k = 1; k < 8; k += 2)
     if (!(c[k] != 0 && std::isfinite(c[k]) && std::isfinite(c[k - 1]))) return false;
-  const Vec3 r = xyz_of(c[0], c[1]), g = xyz_of(c[2], c[3]), b = xyz_of(c[4], c[5]);
+  const Array3 r = xyz_of(c[0], c[1]), g = xyz_of(c[2], c[3]), b = xyz_of(c[4], c[5]);
   const Matrix3 p = {{{r[0], g[0], b[0]}, {r[1], g[1], b[1]}, {r[2], g[2], b[2]}}};
   Matrix3 p_inverse;
   if (!invert(p, p_inverse)) return false;
-  const Vec3 s = apply(p_inverse, xyz_of(c[6], c[7]));
+  const Array3 s = apply(p_inverse, xyz_of(c[6], c[7]));
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) m[i][j] = p[i][j] * s[j];
   return true;
@@ -108,7 +108,7 @@ bool rgb_to_rec709_matrix(const Chromaticities& c, Matrix3& out, std::string& pr
   (void)invert(dst, dst_inverse);
   (void)invert(kBradford, bradford_inverse);
   // Bradford from the source white to D65, in the cone-like space of the Bradford matrix.
-  const Vec3 w_src = apply(kBradford, xyz_of(c[6], c[7])), w_dst = apply(kBradford, xyz_of(kRec709[6], kRec709[7]));
+  const Array3 w_src = apply(kBradford, xyz_of(c[6], c[7])), w_dst = apply(kBradford, xyz_of(kRec709[6], kRec709[7]));
   Matrix3 scale{};
   for (int i = 0; i < 3; ++i) scale[i][i] = w_dst[i] / w_src[i];
   const Matrix3 adapt = multiply(bradford_inverse, multiply(scale, kBradford));

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <vector>
 
+#include "common/angles.h"
 #include "projection/equirect_integrals.h"
 #include "shpack/conventions.h"
 #include "shpack/image_view.h"
@@ -20,7 +21,6 @@
 
 namespace shpack::detail {
 
-inline constexpr double kDegree = std::numbers::pi / 180.0;
 
 inline double dot(const Dir3& a, const Dir3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 

@@ -19,7 +19,6 @@ namespace {
 
 using detail::EquirectTexels;
 using detail::FreeTexels;
-using detail::kDegree;
 
 // sum_t Y_t Omega_t / 4 pi, the map's mean luminance (step 1's floor).
 double mean_luminance(const EquirectTexels& texels) {

@@ -192,8 +192,6 @@ constexpr double kPruneMarginPct = 1e-9;
 
 double worst_channel(const LightFit& fit) noexcept { return std::max({fit.max_pct[0], fit.max_pct[1], fit.max_pct[2]}); }
 
-Vec3 vec(const Dir3& d) noexcept { return {d.x, d.y, d.z}; }
-
 // v / |v| (callers check that |v| is finite and non-zero).
 Dir3 unit_along(Vec3 v) noexcept {
   const double length = std::sqrt(dot(v, v));
@@ -204,9 +202,9 @@ Dir3 unit_along(Vec3 v) noexcept {
 bool unit_directions(std::span<const Dir3> directions, std::vector<Dir3>& unit) {
   unit.clear();
   for (const Dir3& d : directions) {
-    const double length = std::sqrt(dot(vec(d), vec(d)));
+    const double length = std::sqrt(dot(to_vec3(d), to_vec3(d)));
     if (!std::isfinite(length) || length == 0) return false;
-    unit.push_back(unit_along(vec(d)));
+    unit.push_back(unit_along(to_vec3(d)));
   }
   return true;
 }
@@ -216,9 +214,9 @@ Dir3 turned(Vec3 d, Vec3 e, double step) noexcept { return unit_along(std::cos(s
 
 // The four compass moves of d: +-e1, +-e2 for an orthonormal tangent frame (e1, e2) of d.
 std::array<Dir3, 4> compass(const Dir3& direction, double step) noexcept {
-  const Vec3 d = vec(direction);
+  const Vec3 d = to_vec3(direction);
   const Vec3 axis = std::abs(d.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};  // never along d
-  const Vec3 e1 = vec(unit_along(cross(d, axis)));
+  const Vec3 e1 = to_vec3(unit_along(cross(d, axis)));
   const Vec3 e2 = cross(d, e1);
   return {turned(d, e1, step), turned(d, -1.0 * e1, step), turned(d, e2, step), turned(d, -1.0 * e2, step)};
 }
@@ -249,7 +247,7 @@ bool sweep(const LightFitProblem& problem, std::span<const Dir3> sources, std::s
 }  // namespace
 
 double angle_deg(const Dir3& a, const Dir3& b) noexcept {
-  const Vec3 u = vec(a), v = vec(b), c = cross(u, v);
+  const Vec3 u = to_vec3(a), v = to_vec3(b), c = cross(u, v);
   return std::atan2(std::sqrt(dot(c, c)), dot(u, v)) * (180.0 / std::numbers::pi);
 }
 

@@ -12,7 +12,6 @@ namespace shpack {
 namespace {
 
 using detail::EquirectTexels;
-using detail::kDegree;
 
 // The five steps of light_extraction.h; may throw std::bad_alloc (the disc's texel list).
 std::optional<SunLight> find_and_remove_sun(const ImageView& image, float* pixels, const SunSearch& search) {

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "common/angles.h"
 #include "shpack/srgb.h"
 
 namespace shpack {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 }  // namespace
 

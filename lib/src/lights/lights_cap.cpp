@@ -5,11 +5,11 @@
 
 #include "lights/light_geometry.h"
 #include "shpack/lights.h"
+#include "common/angles.h"
 
 namespace shpack {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // A cap about d with irradiance E at normal incidence and cos a = cos_a: the delta's
 // coefficients times g = (2/(1 + cos a), 1, cos a) (lights.h, add_directional_light).

@@ -6,11 +6,11 @@
 
 #include "lights/light_geometry.h"
 #include "shpack/lights.h"
+#include "common/angles.h"
 
 namespace shpack {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Two unit vectors completing n to a right-handed orthonormal basis (e1 x e2 = n), without
 // a branch on a threshold: Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 2017.

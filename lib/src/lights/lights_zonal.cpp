@@ -4,11 +4,11 @@
 
 #include "lights/light_geometry.h"
 #include "shpack/lights.h"
+#include "common/angles.h"
 
 namespace shpack {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Adds the zonal function about +Y with moments m_k = 2 pi int_{-1}^{1} f(y) y^k dy, k = 0..2
 // (per channel): L_0 = k0 m_0, L_1 = k1 m_1, and, since z^2 and x^2 average to (1 - y^2)/2

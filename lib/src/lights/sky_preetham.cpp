@@ -7,11 +7,11 @@
 
 #include "lights/light_geometry.h"
 #include "shpack/sky.h"
+#include "common/angles.h"
 
 namespace shpack {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 struct Perez {
   double a, b, c, d, e;

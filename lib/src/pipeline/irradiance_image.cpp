@@ -14,11 +14,11 @@
 #include "shpack/cube_layout.h"
 #include "shpack/rotate.h"
 #include "shpack/work_queue.h"
+#include "common/angles.h"
 
 namespace shpack {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr std::uint64_t kMaxOutputTexels = std::uint64_t{1} << 26;
 
 Dir3 face_direction(CubeFace face, std::uint32_t n, std::uint32_t x, std::uint32_t y) noexcept {

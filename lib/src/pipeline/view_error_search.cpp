@@ -6,6 +6,7 @@
 #include <numbers>
 #include <vector>
 
+#include "common/angles.h"
 #include "pipeline/view_comparison.h"
 #include "shpack/vec3.h"
 #include "shpack/view_error.h"
@@ -17,7 +18,6 @@ namespace {
 using detail::PointError;
 using detail::ViewComparison;
 
-constexpr double kDegree = std::numbers::pi / 180;
 // Moves at one radius, at most: each is a step of r towards a worse point, so a few cross a
 // basin at that radius, and the search's cost stays bounded on a slope that goes on.
 constexpr int kMovesPerRadius = 4;
@@ -27,11 +27,9 @@ struct Evaluated {
   PointError error;
 };
 
-Vec3 vec(const Dir3& d) noexcept { return {d.x, d.y, d.z}; }
-
 // The point of the circle of angular radius r about the unit d at angle a in its tangent frame.
 Dir3 on_circle(const Dir3& d, double r, double a) noexcept {
-  const Vec3 c = vec(d);
+  const Vec3 c = to_vec3(d);
   const Vec3 axis = std::abs(d.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};  // never along d
   Vec3 e1 = cross(c, axis);
   e1 = (1 / std::sqrt(dot(e1, e1))) * e1;
@@ -72,7 +70,7 @@ std::vector<Evaluated> seeds_of(std::vector<Evaluated>& points) {
   for (const Evaluated& p : points) {
     if (seeds.size() == kViewSearchSeeds) break;
     const bool near = std::any_of(seeds.begin(), seeds.end(), [&](const Evaluated& s) {
-      return dot(vec(s.direction), vec(p.direction)) > apart;
+      return dot(to_vec3(s.direction), to_vec3(p.direction)) > apart;
     });
     if (!near) seeds.push_back(p);
   }

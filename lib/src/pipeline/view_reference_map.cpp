@@ -22,11 +22,11 @@
 #include "shpack/pipeline.h"
 #include "shpack/project_cube.h"
 #include "shpack/project_sphere_map.h"
+#include "common/angles.h"
 
 namespace shpack {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 Dir3 flux_of(const std::array<double, kShCount>& integrals) noexcept {
   // int Y_1,-1 = k1 int y, int Y_10 = k1 int z, int Y_11 = k1 int x (sh_basis.h).

@@ -2,11 +2,11 @@
 
 #include <cmath>
 #include <numbers>
+#include "common/angles.h"
 
 namespace shpack::detail {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 double square(double v) noexcept { return v * v; }
 

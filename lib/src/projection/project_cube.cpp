@@ -27,7 +27,7 @@ constexpr std::array<detail::FaceMap, kCubeFaceCount> kFaceMaps = {
 // One tile: rows [t kTileRows, (t + 1) kTileRows) of every face. Compensated sums of the
 // nine local moments per face and channel, added row by row in row order, and what the
 // rows held; the tile's value depends only on its rows.
-struct Tile {
+struct CubeTile {
   NeumaierSum moments[kCubeFaceCount][kChannelCount][kCubeMoments];
   detail::TexelCounts counts[kCubeFaceCount];
 };
@@ -103,11 +103,11 @@ void row_moment_sums(const float* planes, const double* moments, std::size_t n,
   }
 }
 
-struct Job {
+struct CubeJob {
   std::array<ImageView, kCubeFaceCount> faces;  // resolved
   std::uint32_t n = 0;
   ProjectOptions options;
-  std::vector<Tile> tiles;
+  std::vector<CubeTile> tiles;
   std::vector<double> edge_scratch;   // per worker: 2 rows of edge terms + 1 moment row
   std::vector<float> plane_scratch;   // per worker: 3 n floats
 
@@ -122,7 +122,7 @@ struct Job {
     double* bottom = top + edge_terms();
     double* moments = bottom + edge_terms();
     const std::span<float> planes(plane_scratch.data() + std::size_t{3} * n * worker, std::size_t{3} * n);
-    Tile& tile = tiles[t];
+    CubeTile& tile = tiles[t];
     const std::uint32_t y0 = t * kTileRows, y1 = std::min(n, y0 + kTileRows);
     edge_row(method, detail::cube_corner_coordinate(y0, n), n, top);
     for (std::uint32_t y = y0; y < y1; ++y) {
@@ -168,7 +168,7 @@ Status project_cube(const std::array<ImageView, kCubeFaceCount>& faces, const Pr
   const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
   const unsigned workers = std::min<unsigned>(options.threads == 0 ? hw : options.threads, tile_count);
 
-  Job job;
+  CubeJob job;
   try {
     job.faces = views;
     job.n = n;
@@ -187,7 +187,7 @@ Status project_cube(const std::array<ImageView, kCubeFaceCount>& faces, const Pr
   NeumaierSum total[kChannelCount][kShCount];
   for (int f = 0; f < kCubeFaceCount; ++f) {
     detail::TexelCounts face_counts;
-    for (const Tile& tile : job.tiles) face_counts.merge_after(tile.counts[f]);
+    for (const CubeTile& tile : job.tiles) face_counts.merge_after(tile.counts[f]);
     if (options.nonfinite == NonFinite::Error && face_counts.nonfinite != 0)
       return Status::error(Errc::NonFiniteTexel, "NaN or Inf texel", face_counts.first_nonfinite_x,
                            face_counts.first_nonfinite_y, static_cast<std::uint32_t>(f));
@@ -197,7 +197,7 @@ Status project_cube(const std::array<ImageView, kCubeFaceCount>& faces, const Pr
       CubeMoments m{};
       for (int k = 0; k < kCubeMoments; ++k) {
         NeumaierSum s;
-        for (const Tile& tile : job.tiles) s.add(tile.moments[f][c][k]);
+        for (const CubeTile& tile : job.tiles) s.add(tile.moments[f][c][k]);
         m[k] = s.value();
       }
       const std::array<double, kShCount> p = detail::face_basis_integrals(kFaceMaps[f], m);

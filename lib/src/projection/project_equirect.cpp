@@ -10,18 +10,24 @@
 #include "shpack/project.h"
 
 namespace shpack {
-namespace {
-
-using detail::NeumaierSum;
+namespace detail {
 
 // One tile of kTileRows rows: compensated sums of the 9 basis integrals per channel,
-// added row by row in row order, so the tile's value depends only on its rows.
-struct Tile {
+// added row by row in row order, so the tile's value depends only on its rows. Not in the
+// anonymous namespace: EquirectProjector::State holds them.
+struct EquirectTile {
   NeumaierSum integral[kChannelCount][kShCount];
-  detail::TexelCounts counts;
+  TexelCounts counts;
 };
 
-void add_row(const detail::RowWeights& w, const detail::ColumnSums (&s)[3], Tile& tile) noexcept {
+}  // namespace detail
+
+namespace {
+
+using detail::EquirectTile;
+using detail::NeumaierSum;
+
+void add_row(const detail::RowWeights& w, const detail::ColumnSums (&s)[3], EquirectTile& tile) noexcept {
   for (int c = 0; c < kChannelCount; ++c) {
     const detail::ColumnSums& r = s[c];
     NeumaierSum* out = tile.integral[c];
@@ -61,7 +67,7 @@ struct EquirectProjector::State {
   unsigned workers = 1;
   std::vector<double> column_tables;  // cos1 | sin1 | cos2 | sin2, width each
   std::vector<float> scratch;         // 3 * width floats per worker
-  std::vector<Tile> tiles;
+  std::vector<EquirectTile> tiles;
   std::uint32_t next_row = 0;
   bool failed = false;
 
@@ -74,7 +80,7 @@ struct EquirectProjector::State {
   void run_segment(const ImageView& rows, std::uint32_t first_row, Segment seg,
                    unsigned worker) noexcept {
     const std::span<float> own(scratch.data() + std::size_t{3} * width * worker, std::size_t{3} * width);
-    Tile& tile = tiles[seg.first_row / kTileRows];
+    EquirectTile& tile = tiles[seg.first_row / kTileRows];
     const detail::ColumnTables cols = columns();
     for (std::uint32_t y = seg.first_row; y < seg.first_row + seg.row_count; ++y) {
       detail::ColumnSums sums[3];
@@ -89,7 +95,7 @@ struct EquirectProjector::State {
   }
 
   // Runs the band's segments on up to `workers` threads (work_queue.h); each segment
-  // belongs to a different tile, so workers never share a Tile.
+  // belongs to a different tile, so workers never share a tile.
   void run_band(const ImageView& rows, std::uint32_t first_row) noexcept {
     const std::uint32_t end = first_row + rows.height;
     detail::run_queue(band_segment_count(first_row, end), workers, [&](std::uint32_t k, unsigned worker) noexcept {
@@ -162,7 +168,7 @@ Status EquirectProjector::finish(ShL2& radiance, ProjectStats* stats) noexcept {
     return Status::error(Errc::BadSequence, "finish before every row was added");
   NeumaierSum total[kChannelCount][kShCount];
   detail::TexelCounts counts;
-  for (const Tile& tile : state_->tiles) {
+  for (const EquirectTile& tile : state_->tiles) {
     for (int c = 0; c < kChannelCount; ++c)
       for (int i = 0; i < kShCount; ++i) total[c][i].add(tile.integral[c][i]);
     counts.merge_after(tile.counts);

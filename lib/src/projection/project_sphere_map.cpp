@@ -33,22 +33,22 @@ SphereMoments texel_moments(SphereMap map, std::uint32_t n, std::uint32_t x, std
 
 // Rows [t kTileRows, (t + 1) kTileRows): compensated sums of the moments per channel, added
 // row by row in row order, and what the rows held.
-struct Tile {
+struct SphereMapTile {
   NeumaierSum moments[kChannelCount][kShCount];
   detail::TexelCounts counts;
 };
 
-struct Job {
+struct SphereMapJob {
   ImageView image;  // resolved
   SphereMap map = SphereMap::Octahedral;
   ProjectOptions options;
-  std::vector<Tile> tiles;
+  std::vector<SphereMapTile> tiles;
   std::vector<float> planes;  // per worker: 3 n floats
 
   void run_tile(std::uint32_t t, unsigned worker) noexcept {
     const std::uint32_t n = image.width;
     const std::span<float> row_planes(planes.data() + std::size_t{3} * n * worker, std::size_t{3} * n);
-    Tile& tile = tiles[t];
+    SphereMapTile& tile = tiles[t];
     const std::uint32_t y1 = std::min(n, (t + 1) * kTileRows);
     for (std::uint32_t y = t * kTileRows; y < y1; ++y) {
       const detail::RowSpan span = detail::sphere_map_row_span(map, n, y);
@@ -115,7 +115,7 @@ Status project_sphere_map(const ImageView& image, SphereMap map, const ProjectOp
   if (!known(map)) return Status::error(Errc::InvalidArgument, "unknown sphere map");
   if (options.method != SamplingMethod::Exact)
     return Status::error(Errc::InvalidArgument, "sphere maps are projected with SamplingMethod::Exact only");
-  Job job;
+  SphereMapJob job;
   job.image = image;
   if (Status st = resolve_view(job.image); !st.ok()) return st;
   if (job.image.width != job.image.height) return Status::error(Errc::BadView, "a sphere map must be square");
@@ -134,13 +134,13 @@ Status project_sphere_map(const ImageView& image, SphereMap map, const ProjectOp
   job.run(workers);
 
   detail::TexelCounts counts;
-  for (const Tile& tile : job.tiles) counts.merge_after(tile.counts);
+  for (const SphereMapTile& tile : job.tiles) counts.merge_after(tile.counts);
   if (options.nonfinite == NonFinite::Error && counts.nonfinite != 0)
     return Status::error(Errc::NonFiniteTexel, "NaN or Inf texel", counts.first_nonfinite_x, counts.first_nonfinite_y);
   for (int c = 0; c < kChannelCount; ++c) {
     for (int i = 0; i < kShCount; ++i) {
       NeumaierSum s;
-      for (const Tile& tile : job.tiles) s.add(tile.moments[c][i]);
+      for (const SphereMapTile& tile : job.tiles) s.add(tile.moments[c][i]);
       radiance.c[c][i] = kBasisScale[i] * s.value();
     }
   }

@@ -45,11 +45,11 @@
 
 #include "common/gauss_legendre.h"
 #include "projection/sphere_map_texels.h"
+#include "common/angles.h"
 
 namespace shpack::detail {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kHalfPi = std::numbers::pi / 2;
 // Longest u piece and phi chunk integrated by one rule (only small N have longer ones).
 constexpr double kMaxChunk = 0.25 * std::numbers::pi;

@@ -7,11 +7,11 @@
 
 #include "reference/reference_tree.h"
 #include "shpack/view_reference.h"
+#include "common/angles.h"
 
 namespace shpack {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 std::uint32_t ceil_div(std::uint32_t a, std::uint32_t b) noexcept { return (a + b - 1) / b; }
 

@@ -28,11 +28,11 @@
 #include "sampling/sampling_estimator.h"
 #include "sampling/sampling_points.h"
 #include "sampling/sampling_projectors.h"
+#include "common/angles.h"
 
 namespace shpack::detail {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Exact solid angle of every texel of row j (equirect_weights.h: the k0 weight is the
 // integral of P_0 = 1 over one texel).

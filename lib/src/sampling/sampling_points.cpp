@@ -2,11 +2,11 @@
 
 #include <cmath>
 #include <numbers>
+#include "common/angles.h"
 
 namespace shpack::detail {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // 2^64 / phi rounded to an integer (phi = (1 + sqrt 5)/2): frac(k / phi) = (k * this
 // mod 2^64) / 2^64, exactly up to the constant's rounding (< 2^-64 k).

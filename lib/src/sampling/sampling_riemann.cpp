@@ -7,12 +7,12 @@
 
 #include "sampling/sampling_estimator.h"
 #include "sampling/sampling_projectors.h"
+#include "common/angles.h"
 
 namespace shpack::detail {
 
 Status project_riemann(const ImageView& image, std::uint32_t n, const ProjectOptions& options,
                        ShL2& radiance, ProjectStats* stats) noexcept {
-  constexpr double kPi = std::numbers::pi;
   const std::uint64_t columns = 2 * std::uint64_t{n};
   const double cell = kPi / n;  // dtheta = dlon
   std::uint64_t k = 0;

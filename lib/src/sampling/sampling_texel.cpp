@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "shpack/sampling_methods.h"
+#include "common/angles.h"
 
 namespace shpack {
 namespace {
@@ -21,7 +22,6 @@ std::uint32_t clamp_index(double v, std::uint32_t n) noexcept {
 EquirectTexel equirect_texel(const Dir3& d, std::uint32_t width, std::uint32_t height) noexcept {
   // Inverse of conventions.h: lon = (0.5 - u) 2 pi  =>  u = 0.5 - lon / (2 pi);
   // theta = pi t  =>  t = theta / pi. atan2 returns lon in [-pi, pi], theta in [0, pi].
-  constexpr double kPi = std::numbers::pi;
   const double lon = std::atan2(d.z, d.x);
   const double theta = std::atan2(std::hypot(d.x, d.z), d.y);
   const double u = 0.5 - lon / (2.0 * kPi);

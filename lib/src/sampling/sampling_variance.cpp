@@ -27,12 +27,12 @@
 #include "projection/row_kernel.h"
 #include "sampling/importance_density.h"
 #include "shpack/sampling_methods.h"
+#include "common/angles.h"
 
 namespace shpack {
 namespace {
 
 using detail::NeumaierSum;
-constexpr double kPi = std::numbers::pi;
 
 // int f(mu) dmu over row j for the mu factors above. mu0 - mu1 = 2 sin(theta_c) sin(h)
 // (no cancellation at the poles), mu0^(k+1) - mu1^(k+1) = (mu0 - mu1) sum_a mu0^a mu1^(k-a).

@@ -10,7 +10,7 @@ namespace shpack {
 namespace {
 
 using Mat3 = std::array<std::array<double, 3>, 3>;
-using Vec3 = std::array<double, 3>;
+using Array3 = std::array<double, 3>;
 
 // Cyclic Jacobi eigen-decomposition of a symmetric 3x3 matrix (Golub & Van Loan,
 // "Matrix Computations", 4th ed., sec. 8.5.2): rotations until the off-diagonal vanishes.
@@ -48,11 +48,11 @@ void jacobi_eigen(Mat3& a, Mat3& v) noexcept {
   }
 }
 
-double value_at(const ShL2& sh, int channel, const Vec3& n) noexcept {
+double value_at(const ShL2& sh, int channel, const Array3& n) noexcept {
   return eval_unity_form(sh, channel, n[0], n[1], n[2]);
 }
 
-Vec3 normalized(Vec3 n) noexcept {
+Array3 normalized(Array3 n) noexcept {
   const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   if (len == 0.0) return {0, 1, 0};
   return {n[0] / len, n[1] / len, n[2] / len};
@@ -63,14 +63,14 @@ Vec3 normalized(Vec3 n) noexcept {
 SphereMinimum minimum_on_sphere(const ShL2& sh, int channel) noexcept {
   const auto& s = sh.c[channel];
   Mat3 a = {{{s[8], 0.5 * s[4], 0.5 * s[7]}, {0.5 * s[4], -s[8], 0.5 * s[5]}, {0.5 * s[7], 0.5 * s[5], 3.0 * s[6]}}};
-  const Vec3 b = {s[3], s[1], s[2]};
+  const Array3 b = {s[3], s[1], s[2]};
   Mat3 v;
   jacobi_eigen(a, v);
   std::array<int, 3> order = {0, 1, 2};  // eigenvalues ascending
   for (int i = 0; i < 3; ++i)
     for (int j = i + 1; j < 3; ++j)
       if (a[order[j]][order[j]] < a[order[i]][order[i]]) std::swap(order[i], order[j]);
-  Vec3 alpha, beta;
+  Array3 alpha, beta;
   for (int k = 0; k < 3; ++k) {
     const int e = order[k];
     alpha[k] = a[e][e];
@@ -85,22 +85,22 @@ SphereMinimum minimum_on_sphere(const ShL2& sh, int channel) noexcept {
   // The stationary point for multiplier lambda, in the eigenbasis (components whose
   // eigenvalue equals lambda are left at 0: the hard case sets them).
   auto point = [&](double lambda) {
-    Vec3 m{};
+    Array3 m{};
     for (int k = 0; k < 3; ++k)
       m[k] = alpha[k] == lambda ? 0.0 : -beta[k] / (2.0 * (alpha[k] - lambda));
     return m;
   };
-  auto to_world = [&](const Vec3& m) {
-    Vec3 n{};
+  auto to_world = [&](const Array3& m) {
+    Array3 n{};
     for (int k = 0; k < 3; ++k)
       for (int r = 0; r < 3; ++r) n[r] += v[r][order[k]] * m[k];
     return n;
   };
-  auto norm2 = [](const Vec3& m) { return m[0] * m[0] + m[1] * m[1] + m[2] * m[2]; };
+  auto norm2 = [](const Array3& m) { return m[0] * m[0] + m[1] * m[1] + m[2] * m[2]; };
 
   SphereMinimum best{std::numeric_limits<double>::infinity(), {0, 1, 0}};
-  auto consider = [&](const Vec3& n_raw) {
-    const Vec3 n = normalized(n_raw);
+  auto consider = [&](const Array3& n_raw) {
+    const Array3 n = normalized(n_raw);
     const double f = value_at(sh, channel, n);
     if (f < best.value) best = {f, {n[0], n[1], n[2]}};
   };
@@ -126,7 +126,7 @@ SphereMinimum minimum_on_sphere(const ShL2& sh, int channel) noexcept {
   // first eigenvector fills the rest of the unit length; both signs are candidates.
   for (int k = 0; k < 3; ++k) {
     if (k > 0 && alpha[k] != alpha[0]) break;
-    Vec3 m = point(alpha[0]);
+    Array3 m = point(alpha[0]);
     const double rest = norm2(m);
     if (rest <= 1.0) {
       m[k] = std::sqrt(1.0 - rest);
@@ -137,7 +137,7 @@ SphereMinimum minimum_on_sphere(const ShL2& sh, int channel) noexcept {
   }
   // Guard against a degenerate eigen-decomposition: the poles of every eigen-axis.
   for (int k = 0; k < 3; ++k) {
-    const Vec3 e = {v[0][k], v[1][k], v[2][k]};
+    const Array3 e = {v[0][k], v[1][k], v[2][k]};
     consider(e);
     consider({-e[0], -e[1], -e[2]});
   }

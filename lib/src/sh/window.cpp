@@ -9,11 +9,11 @@
 
 #include "sh/nonnegative_fit.h"
 #include "shpack/sh_minimum.h"
+#include "common/angles.h"
 
 namespace shpack {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // sin(x)/x, with its limit 1 at 0.
 double sinc(double x) noexcept { return x == 0.0 ? 1.0 : std::sin(x) / x; }
