@@ -1,11 +1,10 @@
 // Lights that cover a cap of the sphere: the directional light with an angular diameter,
 // the uniform cone and the sphere light (lights.h states the formulas and cites them).
 #include <cmath>
-#include <numbers>
 
+#include "common/angles.h"
 #include "lights/light_geometry.h"
 #include "shpack/lights.h"
-#include "common/angles.h"
 
 namespace shpack {
 namespace {

@@ -1,10 +1,9 @@
 // Lights that are zonal about +Y: ambient, hemisphere and the gradient sky (lights.h).
 #include <cmath>
-#include <numbers>
 
+#include "common/angles.h"
 #include "lights/light_geometry.h"
 #include "shpack/lights.h"
-#include "common/angles.h"
 
 namespace shpack {
 namespace {

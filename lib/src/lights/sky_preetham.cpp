@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 
+#include "common/angles.h"
 #include "lights/light_geometry.h"
 #include "shpack/sky.h"
-#include "common/angles.h"
 
 namespace shpack {
 namespace {

@@ -4,17 +4,16 @@
 #include <algorithm>
 #include <cmath>
 #include <new>
-#include <numbers>
 #include <random>
 #include <thread>
 
+#include "common/angles.h"
 #include "pipeline/layout_dispatch.h"
 #include "sampling/sampling_points.h"
 #include "sampling/sampling_texel.h"
 #include "shpack/cube_layout.h"
 #include "shpack/rotate.h"
 #include "shpack/work_queue.h"
-#include "common/angles.h"
 
 namespace shpack {
 namespace {

@@ -13,16 +13,15 @@
 //    r0 and r1 the least and largest radius of its square within the disc.
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <vector>
 
+#include "common/angles.h"
 #include "pipeline/layout_dispatch.h"
 #include "projection/row_kernel.h"
 #include "projection/sphere_map_texels.h"
 #include "shpack/pipeline.h"
 #include "shpack/project_cube.h"
 #include "shpack/project_sphere_map.h"
-#include "common/angles.h"
 
 namespace shpack {
 namespace {

@@ -1,7 +1,6 @@
 #include "projection/equirect_weights.h"
 
 #include <cmath>
-#include <numbers>
 #include "common/angles.h"
 
 namespace shpack::detail {

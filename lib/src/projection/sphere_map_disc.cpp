@@ -43,9 +43,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "common/angles.h"
 #include "common/gauss_legendre.h"
 #include "projection/sphere_map_texels.h"
-#include "common/angles.h"
 
 namespace shpack::detail {
 namespace {

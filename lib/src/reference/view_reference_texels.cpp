@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <new>
-#include <numbers>
 
+#include "common/angles.h"
 #include "reference/reference_tree.h"
 #include "shpack/view_reference.h"
-#include "common/angles.h"
 
 namespace shpack {
 namespace {

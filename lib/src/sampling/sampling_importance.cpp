@@ -18,17 +18,16 @@
 #include <algorithm>
 #include <cmath>
 #include <new>
-#include <numbers>
 #include <random>
 #include <vector>
 
 #include "common/accumulate.h"
+#include "common/angles.h"
 #include "projection/equirect_weights.h"
 #include "sampling/importance_density.h"
 #include "sampling/sampling_estimator.h"
 #include "sampling/sampling_points.h"
 #include "sampling/sampling_projectors.h"
-#include "common/angles.h"
 
 namespace shpack::detail {
 namespace {

@@ -1,7 +1,6 @@
 #include "sampling/sampling_points.h"
 
 #include <cmath>
-#include <numbers>
 #include "common/angles.h"
 
 namespace shpack::detail {

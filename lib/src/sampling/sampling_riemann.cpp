@@ -3,11 +3,10 @@
 // dtheta = pi / N and dlon = 2 pi / (2N). The weights are the midpoint rule for
 // int sin(theta) dtheta and are not renormalised: they sum to 4 pi (1 + pi^2/(24 N^2) + ...).
 #include <cmath>
-#include <numbers>
 
+#include "common/angles.h"
 #include "sampling/sampling_estimator.h"
 #include "sampling/sampling_projectors.h"
-#include "common/angles.h"
 
 namespace shpack::detail {
 

@@ -1,10 +1,9 @@
 #include "sampling/sampling_texel.h"
 
 #include <cmath>
-#include <numbers>
 
-#include "shpack/sampling_methods.h"
 #include "common/angles.h"
+#include "shpack/sampling_methods.h"
 
 namespace shpack {
 namespace {

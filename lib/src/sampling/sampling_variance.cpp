@@ -19,15 +19,14 @@
 #include <array>
 #include <cmath>
 #include <new>
-#include <numbers>
 #include <vector>
 
 #include "common/accumulate.h"
+#include "common/angles.h"
 #include "projection/equirect_weights.h"
 #include "projection/row_kernel.h"
 #include "sampling/importance_density.h"
 #include "shpack/sampling_methods.h"
-#include "common/angles.h"
 
 namespace shpack {
 namespace {

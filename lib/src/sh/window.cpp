@@ -5,11 +5,10 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <numbers>
 
+#include "common/angles.h"
 #include "sh/nonnegative_fit.h"
 #include "shpack/sh_minimum.h"
-#include "common/angles.h"
 
 namespace shpack {
 namespace {
