@@ -32,8 +32,9 @@ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_REL
 step cmake --build build-asan -j"$(nproc)"
 step ctest --test-dir build-asan --output-on-failure -j2 -LE large
 
+# -O1 -g1: the flags libFuzzer's documentation and OSS-Fuzz build fuzz targets with.
 cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DSHPACK_FUZZ_SECONDS=10 -DSHPACK_UNITY_BUILD=ON -DSHPACK_BUILD_FUZZERS=ON -DSHPACK_BUILD_TESTS=OFF -DSHPACK_BUILD_BENCH=OFF
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DSHPACK_FUZZ_SECONDS=10 -DSHPACK_UNITY_BUILD=ON -DSHPACK_BUILD_FUZZERS=ON -DSHPACK_BUILD_TESTS=OFF -DSHPACK_BUILD_BENCH=OFF
 step cmake --build build-fuzz -j"$(nproc)" --target shpack_fuzzers
 step ctest --test-dir build-fuzz --output-on-failure -j2 -L fuzz
 
@@ -46,4 +47,4 @@ step ctest --test-dir build-fuzz --output-on-failure -j2 -L fuzz
 cmake -S . -B build-large -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DSHPACK_GLUE_O0=ON \
   -DSHPACK_UNITY_BUILD=ON -DSHPACK_WERROR=ON -DSHPACK_BUILD_BENCH=OFF -DSHPACK_BUILD_PYTHON=ON
 step cmake --build build-large -j"$(nproc)" --target shpack_installable shpack_large_tests
-step ctest --test-dir build-large --output-on-failure -L 'large|python'
+step ctest --test-dir build-large --output-on-failure -j2 -L 'large|python'
