@@ -16,7 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int run(const std::string& args, std::string& err) { return shpack_test::run_cli(args, err); }
+using shpack_test::run_cli;
 
 constexpr const char* kGood = R"({"probes": [[0, 1, 0], [1, 1, 0], [2, 1, 0]],
   "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 3}],
@@ -27,7 +27,7 @@ TEST(BakeCli, WritesProbesAndEffectCosts) {
   const fs::path scene = shpack_test::write_scene("cli_good.json", kGood);
   const fs::path out = shpack_test::scene_scratch() / "cli_good_out.json";
   std::string err;
-  ASSERT_EQ(run("bake " + scene.string() + " -o " + out.string() + " --quiet", err), 0) << err;
+  ASSERT_EQ(run_cli("bake " + scene.string() + " -o " + out.string() + " --quiet", err), 0) << err;
   const nlohmann::json doc = nlohmann::json::parse(std::ifstream(out));
   ASSERT_EQ(doc.at("probes").size(), 3u);
   EXPECT_EQ(doc.at("probes")[1].at("position"), nlohmann::json::parse("[1.0, 1.0, 0.0]"));
@@ -53,7 +53,7 @@ TEST(BakeCli, WritesLightmapImagesAndSidecar) {
   const fs::path dir = shpack_test::scene_scratch() / "cli_lightmap_out";
   fs::create_directories(dir);
   std::string err;
-  ASSERT_EQ(run("bake " + scene.string() + " -o " + (dir / "out.json").string() + " --quiet", err), 0) << err;
+  ASSERT_EQ(run_cli("bake " + scene.string() + " -o " + (dir / "out.json").string() + " --quiet", err), 0) << err;
   // The name is a file stem: '/' and '.' are replaced, so nothing is written outside `dir`.
   for (const char* group : {"SHAr", "SHAg", "SHAb", "SHBr", "SHBg", "SHBb", "SHC", "texels"})
     EXPECT_TRUE(fs::is_regular_file(dir / (std::string("floor____x.") + group + ".exr"))) << group;
@@ -64,7 +64,8 @@ TEST(BakeCli, WritesLightmapImagesAndSidecar) {
   const nlohmann::json doc = nlohmann::json::parse(std::ifstream(dir / "out.json"));
   EXPECT_EQ(doc.at("lightmaps").at(0).at("sidecar"), "floor____x.lightmap.json");
   EXPECT_EQ(doc.at("probes").size(), 0u);
-  ASSERT_EQ(run("preview " + (dir / "floor____x.lightmap.json").string() + " -o " + (dir / "p.png").string(), err), 0)
+  ASSERT_EQ(run_cli("preview " + (dir / "floor____x.lightmap.json").string() + " -o " + (dir / "p.png").string(), err),
+            0)
       << err;
   EXPECT_TRUE(fs::is_regular_file(dir / "p.png"));
 }
@@ -76,7 +77,8 @@ TEST(BakeCli, LightmapOnAMeshWithoutUvsIsOneLine) {
     "geometry": [{"type": "mesh", "path": "cli_no_uv.obj", "lightmap": {"resolution": [4, 4]}}],
     "effects": ["direct"]})");
   std::string err;
-  EXPECT_EQ(run("bake " + scene.string() + " -o " + (shpack_test::scene_scratch() / "no_uv.json").string(), err), 1);
+  EXPECT_EQ(run_cli("bake " + scene.string() + " -o " + (shpack_test::scene_scratch() / "no_uv.json").string(), err),
+            1);
   EXPECT_NE(err.find("cli_no_uv.obj"), std::string::npos) << err;
   EXPECT_NE(err.find("lightmap"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
@@ -87,8 +89,8 @@ TEST(BakeCli, UnityProbesFormatIsFlatArraysInProbeOrder) {
   const fs::path out = shpack_test::scene_scratch() / "cli_unity_out.json";
   const fs::path full = shpack_test::scene_scratch() / "cli_unity_full.json";
   std::string err;
-  ASSERT_EQ(run("bake " + scene.string() + " --format unity-probes -o " + out.string(), err), 0) << err;
-  ASSERT_EQ(run("bake " + scene.string() + " -o " + full.string(), err), 0) << err;
+  ASSERT_EQ(run_cli("bake " + scene.string() + " --format unity-probes -o " + out.string(), err), 0) << err;
+  ASSERT_EQ(run_cli("bake " + scene.string() + " -o " + full.string(), err), 0) << err;
   const nlohmann::json doc = nlohmann::json::parse(std::ifstream(out));
   const nlohmann::json ref = nlohmann::json::parse(std::ifstream(full));
   EXPECT_EQ(doc.at("format"), "unity-probes");
@@ -110,12 +112,12 @@ TEST(BakeCli, ABadSceneExitsNonZeroNamesThePathAndWritesNothing) {
   const fs::path out = shpack_test::scene_scratch() / "cli_bad_out.json";
   fs::remove(out);
   std::string err;
-  EXPECT_EQ(run("bake " + scene.string() + " -o " + out.string(), err), 1);
+  EXPECT_EQ(run_cli("bake " + scene.string() + " -o " + out.string(), err), 1);
   EXPECT_EQ(err, "shpack: " + scene.string() + ": lights[2].radius: must be > 0\n");
   EXPECT_FALSE(fs::exists(out));
   // An existing output survives a failed bake untouched.
   std::ofstream(out) << "keep";
-  EXPECT_EQ(run("bake " + scene.string() + " -o " + out.string(), err), 1);
+  EXPECT_EQ(run_cli("bake " + scene.string() + " -o " + out.string(), err), 1);
   std::ifstream in(out);
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()), "keep");
 }
@@ -129,9 +131,9 @@ TEST(BakeCli, HostileScenesFailInOneLineAndWriteNothing) {
   const fs::path out = shpack_test::scene_scratch() / "cli_hostile_out.json";
   fs::remove(out);
   std::string err;
-  EXPECT_EQ(run("bake " + scene.string() + " -o " + out.string(), err), 1);
+  EXPECT_EQ(run_cli("bake " + scene.string() + " -o " + out.string(), err), 1);
   EXPECT_EQ(err, "shpack: " + scene.string() + ": nested deeper than 64 levels\n");
-  EXPECT_EQ(run("bake /dev/zero -o " + out.string(), err), 1);
+  EXPECT_EQ(run_cli("bake /dev/zero -o " + out.string(), err), 1);
   EXPECT_EQ(err, "shpack: /dev/zero: is a device, not a regular file\n");
   EXPECT_FALSE(fs::exists(out));
 }
@@ -143,12 +145,13 @@ TEST(BakeCli, ThreadsBeyondTheCoresAreCapped) {
   const fs::path one = shpack_test::scene_scratch() / "cli_threads_1.json";
   const fs::path many = shpack_test::scene_scratch() / "cli_threads_max.json";
   std::string err;
-  ASSERT_EQ(run("bake " + scene.string() + " --format unity-probes --threads 1 -o " + one.string(), err), 0) << err;
-  ASSERT_EQ(run("bake " + scene.string() + " --format unity-probes --threads 4294967295 -o " + many.string(), err), 0)
+  ASSERT_EQ(run_cli("bake " + scene.string() + " --format unity-probes --threads 1 -o " + one.string(), err), 0) << err;
+  ASSERT_EQ(run_cli("bake " + scene.string() + " --format unity-probes --threads 4294967295 -o " + many.string(), err),
+            0)
       << err;
   EXPECT_EQ(err, "");
   EXPECT_EQ(nlohmann::json::parse(std::ifstream(one)), nlohmann::json::parse(std::ifstream(many)));
-  EXPECT_EQ(run("bake " + scene.string() + " --threads -1", err), 2) << "not an unsigned integer";
+  EXPECT_EQ(run_cli("bake " + scene.string() + " --threads -1", err), 2) << "not an unsigned integer";
 }
 
 }  // namespace
@@ -165,7 +168,7 @@ TEST(BakeCli, EveryProbeSaysHowWrongItMayBeAndHowManySamplesItTook) {
   const fs::path scene = shpack_test::write_scene("cli_error.json", std::string(kPenumbra) + R"({"target_error_pct": 0.5}})");
   const fs::path out = shpack_test::scene_scratch() / "cli_error_out.json";
   std::string err;
-  ASSERT_EQ(run("bake " + scene.string() + " -o " + out.string(), err), 0) << err;
+  ASSERT_EQ(run_cli("bake " + scene.string() + " -o " + out.string(), err), 0) << err;
   EXPECT_EQ(err, "") << "the target is met: nothing to warn about";
   const nlohmann::json doc = nlohmann::json::parse(std::ifstream(out));
   for (const auto& probe : doc.at("probes")) {
@@ -184,7 +187,7 @@ TEST(BakeCli, ProbesThatReachTheCapAreCountedInOneWarning) {
       shpack_test::write_scene("cli_capped.json", std::string(kPenumbra) + R"({"target_error_pct": 1e-6, "max_samples": 512}})");
   const fs::path out = shpack_test::scene_scratch() / "cli_capped_out.json";
   std::string err;
-  ASSERT_EQ(run("bake " + scene.string() + " -o " + out.string(), err), 0) << err;
+  ASSERT_EQ(run_cli("bake " + scene.string() + " -o " + out.string(), err), 0) << err;
   EXPECT_EQ(err.rfind("shpack: " + scene.string() + ": 2 of 2 probes reached settings.max_samples (512) before "
                       "settings.target_error_pct (1e-06 %) in shadows; the largest error estimate left is ", 0), 0u)
       << err;
@@ -202,7 +205,7 @@ TEST(BakeCli, BenchOfASceneMeasuresEachEffectAgainstAReference) {
   const fs::path scene = shpack_test::write_scene("cli_bench.json", std::string(kPenumbra) + "{}}");
   const fs::path out = shpack_test::scene_scratch() / "cli_bench.out";
   std::string err;
-  ASSERT_EQ(run("bench " + scene.string() + " --quick --scene-seeds 2 --json > " + out.string(), err), 0) << err;
+  ASSERT_EQ(run_cli("bench " + scene.string() + " --quick --scene-seeds 2 --json > " + out.string(), err), 0) << err;
   const nlohmann::json records = nlohmann::json::parse(std::ifstream(out));
   // shadows only (the one Monte Carlo effect here): 3 counts for each of the two estimators,
   // and the scene's settings.
@@ -219,7 +222,7 @@ TEST(BakeCli, BenchOfASceneMeasuresEachEffectAgainstAReference) {
   // The penumbra probe's error falls with samples, and the defaults meet their target.
   EXPECT_LT(records[2].at("err_max_pct").get<double>(), records[0].at("err_max_pct").get<double>());
   EXPECT_LT(records[6].at("error_estimate_pct").get<double>(), 1.0);
-  ASSERT_NE(run("bench " + scene.string() + " data/hdri/courtyard.exr", err), 0);
+  ASSERT_NE(run_cli("bench " + scene.string() + " data/hdri/courtyard.exr", err), 0);
   EXPECT_NE(err.find("give scenes (.json) or maps, not both"), std::string::npos) << err;
 }
 
@@ -235,7 +238,7 @@ TEST(BakeCli, BenchOfALightmapSceneMeasuresItsTexelsBesideItsProbes) {
     "effects": ["direct", "shadows"]})");
   const fs::path out = shpack_test::scene_scratch() / "cli_bench_lightmap.out";
   std::string err;
-  ASSERT_EQ(run("bench " + scene.string() + " --quick --scene-seeds 2 --json > " + out.string(), err), 0) << err;
+  ASSERT_EQ(run_cli("bench " + scene.string() + " --quick --scene-seeds 2 --json > " + out.string(), err), 0) << err;
   const nlohmann::json records = nlohmann::json::parse(std::ifstream(out));
   // shadows for each receiver kind: 3 counts for each of the two estimators, and the settings.
   ASSERT_EQ(records.size(), 14u) << records.dump();

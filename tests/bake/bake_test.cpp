@@ -22,7 +22,6 @@
 namespace shpack::bake {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 using shpack_test::kEps;
 
 using shpack_test::Baked;
@@ -151,7 +150,7 @@ TEST(Bake, ASmallerSphereCentredInFrontOfASphereLightLeavesTheDifferenceOfTwoCap
     "lights": [{"type": "sphere", "position": [0, 10, 0], "radius": 1, "intensity": [3, 2, 1]}],
     "geometry": [{"type": "sphere", "position": [0, 5, 0], "radius": 0.25}],
     "effects": ["direct", "shadows"], "settings": {"shadow_samples": )" + std::to_string(samples) + "}}");
-  const Rgb radiance = {3 / kPi, 2 / kPi, 1 / kPi};
+  const Rgb radiance = {3 / std::numbers::pi, 2 / std::numbers::pi, 1 / std::numbers::pi};
   ShL2 big, small;
   ASSERT_TRUE(add_cone_light({0, 1, 0}, std::asin(0.1), radiance, big).ok());
   ASSERT_TRUE(add_cone_light({0, 1, 0}, std::asin(0.05), radiance, small).ok());
@@ -163,7 +162,7 @@ TEST(Bake, ASmallerSphereCentredInFrontOfASphereLightLeavesTheDifferenceOfTwoCap
   // most one point's worth, and the smooth rest of each point's value by at most the same
   // again: 2 (Omega_L / m) L max|Y_i|, Omega_L = 2 pi (1 - cos a_L).
   const double m = samples / 8.0;
-  const double stratum = 2 * kPi * (1 - std::sqrt(0.99)) / m;
+  const double stratum = 2 * std::numbers::pi * (1 - std::sqrt(0.99)) / m;
   const std::array<double, kShCount> max_y = {kY0, kY1, kY1, kY1, kY2 / 2, kY2 / 2, 2 * kY20, kY2 / 2, kY22};
   for (int c = 0; c < kChannelCount; ++c)
     for (int i = 0; i < kShCount; ++i) {

@@ -21,7 +21,6 @@
 namespace shpack::bake {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 struct Lightmapped {
   scene::Scene scene;
@@ -46,7 +45,8 @@ ShL2 uniform_hemisphere(double radiance, const Vec3& n) {
   const std::array<double, kShCount> y = eval_basis(n.x, n.y, n.z);
   ShL2 out;
   for (int c = 0; c < kChannelCount; ++c)
-    for (int i = 0; i < kShCount; ++i) out.c[c][i] = radiance * (i == 0 ? 2 * kPi : i < 4 ? kPi : 0.0) * y[i];
+    for (int i = 0; i < kShCount; ++i)
+      out.c[c][i] = radiance * (i == 0 ? 2 * std::numbers::pi : i < 4 ? std::numbers::pi : 0.0) * y[i];
   return out;
 }
 
@@ -230,7 +230,7 @@ TEST(Lightmap, SunPenumbraUnderABoxEdgeIsHalf) {
   ASSERT_TRUE(b.status.ok()) << b.status.message;
   const LightmapTexels& map = b.result.maps[0];
   ShL2 sun;
-  ASSERT_TRUE(add_directional_light({0, 1, 0}, 10 * kPi / 180, {2, 2, 2}, sun).ok());
+  ASSERT_TRUE(add_directional_light({0, 1, 0}, 10 * std::numbers::pi / 180, {2, 2, 2}, sun).ok());
   for (std::size_t t = 0; t < 4; ++t) {
     const double want = 0.75 * sun.c[0][0];
     // error_pct is of the texel's mean E/pi, whose L0 part is c_0 Y_0: the L0 error allowed.

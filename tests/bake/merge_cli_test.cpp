@@ -17,7 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int run(const std::string& args, std::string& err) { return shpack_test::run_cli(args, err); }
+using shpack_test::run_cli;
 
 constexpr const char* kScene = R"({
   "environment": {"type": "gradient", "zenith": [0.2, 0.3, 0.8], "horizon": 0.7, "ground": 0.2},
@@ -55,16 +55,16 @@ TEST(MergeCli, MergedShardsWriteTheOneMachineFiles) {
   fs::create_directories(one);
   fs::create_directories(merged);
   std::string err;
-  ASSERT_EQ(run("bake " + scene.string() + " -o " + (one / "out.json").string() + " --quiet", err), 0) << err;
+  ASSERT_EQ(run_cli("bake " + scene.string() + " -o " + (one / "out.json").string() + " --quiet", err), 0) << err;
   std::string parts;
   for (const char* k : {"3", "1", "2"}) {  // merged in another order than baked
     const fs::path part = shpack_test::scene_scratch() / (std::string("merge_part") + k);
     std::string bake = "bake ";  // appended: g++ 12 -O3 misreads "literal" + string&& (-Wstringop-overflow)
     bake.append(scene.string()).append(" --shard ").append(k).append("/3 --threads 1 -o ").append(part.string());
-    ASSERT_EQ(run(bake.append(" --quiet"), err), 0) << err;
+    ASSERT_EQ(run_cli(bake.append(" --quiet"), err), 0) << err;
     parts.append(" ").append(part.string());
   }
-  ASSERT_EQ(run("merge" + parts + " -o " + (merged / "out.json").string(), err), 0) << err;
+  ASSERT_EQ(run_cli("merge" + parts + " -o " + (merged / "out.json").string(), err), 0) << err;
   for (const char* group : {"SHAr", "SHAg", "SHAb", "texels"}) {
     const std::string name = std::string("floor.") + group + ".exr";
     EXPECT_EQ(bytes_of(one / name), bytes_of(merged / name)) << name;
@@ -81,15 +81,15 @@ TEST(MergeCli, WrongPartsFailInOneLineNamingTheFileAndWriteNothing) {
   fs::create_directories(dir);
   std::string err;
   const fs::path p1 = dir / "p1", p2 = dir / "p2";
-  ASSERT_EQ(run("bake " + scene.string() + " --shard 1/2 -o " + p1.string() + " --quiet", err), 0) << err;
-  ASSERT_EQ(run("bake " + scene.string() + " --shard 2/2 -o " + p2.string() + " --quiet", err), 0) << err;
+  ASSERT_EQ(run_cli("bake " + scene.string() + " --shard 1/2 -o " + p1.string() + " --quiet", err), 0) << err;
+  ASSERT_EQ(run_cli("bake " + scene.string() + " --shard 2/2 -o " + p2.string() + " --quiet", err), 0) << err;
   const fs::path out = dir / "out.json";
   {
     std::ofstream keep(out);
     keep << "a good output\n";
   }
   const auto fails = [&](const std::string& args, const std::string& want) {
-    EXPECT_EQ(run("merge " + args + " -o " + out.string(), err), 1) << args;
+    EXPECT_EQ(run_cli("merge " + args + " -o " + out.string(), err), 1) << args;
     EXPECT_NE(err.find(want), std::string::npos) << err;
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
     EXPECT_EQ(bytes_of(out), "a good output\n");
@@ -106,12 +106,12 @@ TEST(MergeCli, WrongPartsFailInOneLineNamingTheFileAndWriteNothing) {
   other["probes"].push_back({0, 2, 0});
   const fs::path other_scene = shpack_test::write_scene("merge_other.json", other.dump());
   const fs::path q = dir / "q";
-  ASSERT_EQ(run("bake " + other_scene.string() + " --shard 2/2 -o " + q.string() + " --quiet", err), 0) << err;
+  ASSERT_EQ(run_cli("bake " + other_scene.string() + " --shard 2/2 -o " + q.string() + " --quiet", err), 0) << err;
   fails(p1.string() + " " + q.string(), q.string() + ": a part of another scene");
   // A part is a file of its own: --shard without -o is a usage error.
-  EXPECT_EQ(run("bake " + scene.string() + " --shard 1/2 --quiet", err), 2);
+  EXPECT_EQ(run_cli("bake " + scene.string() + " --shard 1/2 --quiet", err), 2);
   EXPECT_NE(err.find("-o PART"), std::string::npos) << err;
-  EXPECT_EQ(run("bake " + scene.string() + " --shard 3/2 -o " + (dir / "x").string(), err), 2);
+  EXPECT_EQ(run_cli("bake " + scene.string() + " --shard 3/2 -o " + (dir / "x").string(), err), 2);
   EXPECT_FALSE(fs::exists(dir / "x"));
 }
 

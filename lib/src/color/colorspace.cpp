@@ -26,7 +26,7 @@ Matrix3 multiply(const Matrix3& a, const Matrix3& b) {
   return m;
 }
 
-Array3 apply(const Matrix3& m, const Array3& v) {
+Array3 transformed(const Matrix3& m, const Array3& v) {
   return {m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2], m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
           m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2]};
 }
@@ -55,7 +55,7 @@ bool rgb_to_xyz(const Chromaticities& c, Matrix3& m) {
   const Matrix3 p = {{{r[0], g[0], b[0]}, {r[1], g[1], b[1]}, {r[2], g[2], b[2]}}};
   Matrix3 p_inverse;
   if (!invert(p, p_inverse)) return false;
-  const Array3 s = apply(p_inverse, xyz_of(c[6], c[7]));
+  const Array3 s = transformed(p_inverse, xyz_of(c[6], c[7]));
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) m[i][j] = p[i][j] * s[j];
   return true;
@@ -108,7 +108,8 @@ bool rgb_to_rec709_matrix(const Chromaticities& c, Matrix3& out, std::string& pr
   (void)invert(dst, dst_inverse);
   (void)invert(kBradford, bradford_inverse);
   // Bradford from the source white to D65, in the cone-like space of the Bradford matrix.
-  const Array3 w_src = apply(kBradford, xyz_of(c[6], c[7])), w_dst = apply(kBradford, xyz_of(kRec709[6], kRec709[7]));
+  const Array3 w_src = transformed(kBradford, xyz_of(c[6], c[7]));
+  const Array3 w_dst = transformed(kBradford, xyz_of(kRec709[6], kRec709[7]));
   Matrix3 scale{};
   for (int i = 0; i < 3; ++i) scale[i][i] = w_dst[i] / w_src[i];
   const Matrix3 adapt = multiply(bradford_inverse, multiply(scale, kBradford));
