@@ -144,6 +144,21 @@ TEST(BakePart, PartFileRoundTripsEveryNumber) {
   }
 }
 
+TEST(BakePart, AShardCountsTheShadowRaysTheBakeTraces) {
+  // A light the bake treats as a delta (scene_lights.h: a point, a spot, a sharp directional
+  // light, a sphere of radius 0) has one shadow ray, any other shadow_samples. A sphere light of
+  // radius 0 (the point light's limit; the scene file refuses it, the library takes it) is
+  // then the point light in the plan's cost: the plan once had its own copy of the rule,
+  // without the sphere, and counted 16 shadow rays for it.
+  scene::Scene scene = load("plan_delta", kScene);
+  const double with_point = estimated_rays(scene);
+  scene.lights[1].type = scene::LightType::Sphere;
+  scene.lights[1].radius = 0;
+  EXPECT_EQ(estimated_rays(scene), with_point);
+  scene.lights[1].radius = 0.1;
+  EXPECT_EQ(estimated_rays(scene), with_point - 1 + scene.settings.shadow_samples);
+}
+
 TEST(BakePart, PlanTilesTheItemsBalancedByCost) {
   // Each texel of the floor costs its points (4 when whole) times a probe's rays, so by cost
   // a shard holds fewer texels than probes would make it. Every shard's cost is within one

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "probe_validity.h"
+#include "scene_lights.h"
 #include "shpack/io/version.h"
 
 namespace shpack::bake {
@@ -20,12 +21,6 @@ void add_geometry(GeometryCost& into, const GeometryCost& from) {
   into.time_ms += from.time_ms;
   into.triangles = from.triangles;
   into.spheres = from.spheres;
-}
-
-bool is_delta(const scene::SceneLight& light) {
-  using scene::LightType;
-  return light.type == LightType::Point || light.type == LightType::Spot ||
-         (light.type == LightType::Directional && light.angular_diameter == 0);
 }
 
 // Where each shard's items start: shard k (from 1) holds items [first[k - 1], first[k]).
