@@ -21,7 +21,6 @@
 namespace shpack::bake {
 namespace {
 
-
 struct Lightmapped {
   scene::Scene scene;
   io::IoStatus status = io::IoStatus::success();

@@ -21,7 +21,6 @@
 
 namespace shpack::detail {
 
-
 inline double dot(const Dir3& a, const Dir3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
 // The angle between two unit vectors from their dot product (rounding clamped).

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <utility>
 
+#include "common/angles.h"
 #include "common/simplex.h"
 #include "shpack/convolution.h"
 #include "shpack/lights.h"
@@ -297,7 +298,7 @@ Status refine_light_directions(const LightFitProblem& problem, std::span<const D
       return Status::error(Errc::InvalidArgument, "a light direction is not finite and non-zero");
     double best = worst_channel(fit_unit(problem, unit));
     for (double step_deg : kLightRefineStepsDeg) {
-      const double step = step_deg * (std::numbers::pi / 180.0);
+      const double step = step_deg * kDegree;
       for (int k = 0; k < kLightRefineSweeps && sweep(problem, sources, reach_deg, step, unit, best); ++k) {
       }
     }

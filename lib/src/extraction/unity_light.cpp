@@ -8,10 +8,6 @@
 #include "shpack/srgb.h"
 
 namespace shpack {
-namespace {
-
-
-}  // namespace
 
 UnitySunLight unity_sun_light(const SunLight& sun) noexcept {
   UnitySunLight light;

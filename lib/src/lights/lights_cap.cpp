@@ -9,7 +9,6 @@
 namespace shpack {
 namespace {
 
-
 // A cap about d with irradiance E at normal incidence and cos a = cos_a: the delta's
 // coefficients times g = (2/(1 + cos a), 1, cos a) (lights.h, add_directional_light).
 void add_cap(Vec3 d, double cos_a, const Rgb& irradiance, ShL2& out) noexcept {

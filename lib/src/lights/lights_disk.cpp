@@ -10,7 +10,6 @@
 namespace shpack {
 namespace {
 
-
 // Two unit vectors completing n to a right-handed orthonormal basis (e1 x e2 = n), without
 // a branch on a threshold: Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 2017.
 void basis_of(Vec3 n, Vec3& e1, Vec3& e2) noexcept {

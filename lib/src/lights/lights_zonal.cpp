@@ -8,7 +8,6 @@
 namespace shpack {
 namespace {
 
-
 // Adds the zonal function about +Y with moments m_k = 2 pi int_{-1}^{1} f(y) y^k dy, k = 0..2
 // (per channel): L_0 = k0 m_0, L_1 = k1 m_1, and, since z^2 and x^2 average to (1 - y^2)/2
 // over the azimuth, int f (3z^2 - 1) = int f (x^2 - y^2) = -(1/2)(3 m_2 - m_0).

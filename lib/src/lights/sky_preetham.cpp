@@ -11,7 +11,6 @@
 namespace shpack {
 namespace {
 
-
 struct Perez {
   double a, b, c, d, e;
   // F(theta, gamma) with cos theta > 0 (above the horizon), or cos theta = 0 where

@@ -26,7 +26,6 @@
 namespace shpack {
 namespace {
 
-
 Dir3 flux_of(const std::array<double, kShCount>& integrals) noexcept {
   // int Y_1,-1 = k1 int y, int Y_10 = k1 int z, int Y_11 = k1 int x (sh_basis.h).
   return {integrals[3] / kY1, integrals[1] / kY1, integrals[2] / kY1};

@@ -6,7 +6,6 @@
 namespace shpack::detail {
 namespace {
 
-
 double square(double v) noexcept { return v * v; }
 
 // Longitude integrals over a column of width dlon centred on lon_m, written as factors

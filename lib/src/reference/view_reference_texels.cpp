@@ -11,7 +11,6 @@
 namespace shpack {
 namespace {
 
-
 std::uint32_t ceil_div(std::uint32_t a, std::uint32_t b) noexcept { return (a + b - 1) / b; }
 
 }  // namespace

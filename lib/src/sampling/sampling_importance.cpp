@@ -32,7 +32,6 @@
 namespace shpack::detail {
 namespace {
 
-
 // Exact solid angle of every texel of row j (equirect_weights.h: the k0 weight is the
 // integral of P_0 = 1 over one texel).
 double row_solid_angle(std::uint32_t j, std::uint32_t height, std::uint32_t width) noexcept {

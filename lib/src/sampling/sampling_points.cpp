@@ -6,7 +6,6 @@
 namespace shpack::detail {
 namespace {
 
-
 // 2^64 / phi rounded to an integer (phi = (1 + sqrt 5)/2): frac(k / phi) = (k * this
 // mod 2^64) / 2^64, exactly up to the constant's rounding (< 2^-64 k).
 constexpr std::uint64_t kInverseGoldenFixed64 = 0x9E3779B97F4A7C15ull;

@@ -1,7 +1,8 @@
 #include "shpack/rotate.h"
 
 #include <cmath>
-#include <numbers>
+
+#include "common/angles.h"
 
 namespace shpack {
 namespace {
@@ -20,7 +21,7 @@ SinCos sincos_degrees(double degrees) noexcept {
   const double r = std::fmod(degrees, 360.0);
   const double q = std::nearbyint(r / 90.0);
   const double rem = r - 90.0 * q;
-  const double x = rem * (std::numbers::pi / 180.0);
+  const double x = rem * kDegree;
   const double s = std::sin(x), c = std::cos(x);
   switch (((static_cast<int>(q) % 4) + 4) % 4) {
     case 0: return {s, c};

@@ -13,7 +13,6 @@
 namespace shpack {
 namespace {
 
-
 // sin(x)/x, with its limit 1 at 0.
 double sinc(double x) noexcept { return x == 0.0 ? 1.0 : std::sin(x) / x; }
 
