@@ -11,7 +11,6 @@ namespace shpack::detail {
 
 inline double length(Vec3 a) noexcept { return std::hypot(a.x, a.y, a.z); }
 constexpr Vec3 vec(Point3 p) noexcept { return {p.x, p.y, p.z}; }
-constexpr Vec3 vec(Dir3 d) noexcept { return {d.x, d.y, d.z}; }
 
 inline bool finite(Vec3 a) noexcept {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);

@@ -20,7 +20,7 @@ void add_cap(Vec3 d, double cos_a, const Rgb& irradiance, ShL2& out) noexcept {
 Status add_directional_light(Dir3 towards_light, double angular_diameter, const Rgb& irradiance,
                              ShL2& radiance) noexcept {
   Vec3 d;
-  if (!detail::normalised(detail::vec(towards_light), d))
+  if (!detail::normalised(to_vec3(towards_light), d))
     return Status::error(Errc::InvalidArgument, "directional light: direction must be finite and non-zero");
   if (!(angular_diameter >= 0 && angular_diameter < kPi))
     return Status::error(Errc::InvalidArgument, "directional light: angular diameter must be in [0, pi)");
@@ -32,7 +32,7 @@ Status add_directional_light(Dir3 towards_light, double angular_diameter, const 
 
 Status add_cone_light(Dir3 axis, double half_angle, const Rgb& radiance, ShL2& out) noexcept {
   Vec3 d;
-  if (!detail::normalised(detail::vec(axis), d))
+  if (!detail::normalised(to_vec3(axis), d))
     return Status::error(Errc::InvalidArgument, "cone light: axis must be finite and non-zero");
   if (!(half_angle >= 0 && half_angle <= kPi))
     return Status::error(Errc::InvalidArgument, "cone light: half-angle must be in [0, pi]");

@@ -39,7 +39,7 @@ int disk_nodes(double h, double q_len, double radius) noexcept {
 Status add_disk_light(const DiskLight& disk, const Rgb& radiance, Point3 probe, ShL2& radiance_sh,
                       DiskQuadrature* quadrature) noexcept {
   Vec3 n;
-  if (!detail::normalised(detail::vec(disk.normal), n))
+  if (!detail::normalised(to_vec3(disk.normal), n))
     return Status::error(Errc::InvalidArgument, "disk light: normal must be finite and non-zero");
   if (!(disk.radius > 0 && std::isfinite(disk.radius)))
     return Status::error(Errc::InvalidArgument, "disk light: radius must be finite and > 0");

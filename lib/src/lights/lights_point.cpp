@@ -35,7 +35,7 @@ double spot_falloff(const SpotLight& spot, double cos_t) noexcept {
 Status add_spot_light(const SpotLight& spot, const Rgb& intensity, Point3 probe,
                       ShL2& radiance) noexcept {
   Vec3 axis;
-  if (!detail::normalised(detail::vec(spot.axis), axis))
+  if (!detail::normalised(to_vec3(spot.axis), axis))
     return Status::error(Errc::InvalidArgument, "spot light: axis must be finite and non-zero");
   if (!(spot.inner_angle >= 0 && spot.inner_angle <= spot.outer_angle &&
         spot.outer_angle <= std::numbers::pi))

@@ -26,7 +26,7 @@ double triangle_solid_angle(Vec3 a, Vec3 b, Vec3 c, Vec3 eb, Vec3 ec) noexcept {
 Status add_rect_light(const RectLight& rect, const Rgb& radiance, Point3 probe,
                       ShL2& radiance_sh) noexcept {
   Vec3 u, v;
-  if (!detail::normalised(detail::vec(rect.right), u) || !detail::normalised(detail::vec(rect.up), v))
+  if (!detail::normalised(to_vec3(rect.right), u) || !detail::normalised(to_vec3(rect.up), v))
     return Status::error(Errc::InvalidArgument, "rect light: right and up must be finite and non-zero");
   if (!(std::fabs(dot(u, v)) <= 1e-6))
     return Status::error(Errc::InvalidArgument, "rect light: right and up must be orthogonal");

@@ -29,7 +29,7 @@ struct SkyModel {
 };
 
 Status make_model(const PreethamSky& sky, SkyModel& m) noexcept {
-  if (!detail::normalised(detail::vec(sky.sun), m.sun))
+  if (!detail::normalised(to_vec3(sky.sun), m.sun))
     return Status::error(Errc::InvalidArgument, "preetham sky: sun direction must be finite and non-zero");
   if (!(m.sun.y >= 0)) return Status::error(Errc::InvalidArgument, "preetham sky: the sun must be above the horizon");
   const double t = sky.turbidity;
@@ -116,7 +116,7 @@ Status preetham_radiance(const PreethamSky& sky, Dir3 d, Rgb& radiance) noexcept
   SkyModel m;
   if (Status st = make_model(sky, m); !st.ok()) return st;
   Vec3 u;
-  if (!detail::normalised(detail::vec(d), u))
+  if (!detail::normalised(to_vec3(d), u))
     return Status::error(Errc::InvalidArgument, "preetham sky: direction must be finite and non-zero");
   radiance = u.y < 0 ? sky.ground : sky_rgb(m, u, sky.intensity);
   return Status::success();
